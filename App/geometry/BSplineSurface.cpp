@@ -1,0 +1,105 @@
+#include "geometry/BSplineSurface.hpp"
+
+#include <cmath>
+
+#include "geometry/BasisFunctions.hpp"
+
+namespace nurbslod {
+
+BSplineSurface::BSplineSurface(KnotVector u, KnotVector v, int countU, int countV,
+                               std::vector<HomogeneousPoint3> weightedPoles)
+    : u_(std::move(u)),
+      v_(std::move(v)),
+      countU_(countU),
+      countV_(countV),
+      poles_(std::move(weightedPoles)) {}
+
+bool BSplineSurface::isRational() const {
+    if (poles_.empty()) return false;
+    const double w0 = poles_.front()[3];
+    for (const auto& p : poles_)
+        if (p[3] != w0) return true;
+    return false;
+}
+
+HomogeneousPoint3 BSplineSurface::homogeneousPoint(double u, double v) const {
+    const int pu = u_.degree(), pv = v_.degree();
+    const int su = u_.findSpan(u), sv = v_.findSpan(v);
+    double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
+    basisFunctions(u_, su, u, Nu);
+    basisFunctions(v_, sv, v, Nv);
+    HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
+    for (int k = 0; k <= pu; ++k) {
+        HomogeneousPoint3 inner = HomogeneousPoint3::Zero();
+        const HomogeneousPoint3* row = &poles_[(su - pu + k) * countV_ + (sv - pv)];
+        for (int l = 0; l <= pv; ++l) inner += Nv[l] * row[l];
+        sum += Nu[k] * inner;
+    }
+    return sum;
+}
+
+Point3 BSplineSurface::point(double u, double v) const {
+    return projectHomogeneous(homogeneousPoint(u, v));
+}
+
+BSplineSurface::FirstDerivatives BSplineSurface::derivatives(double u, double v) const {
+    const int pu = u_.degree(), pv = v_.degree();
+    const int su = u_.findSpan(u), sv = v_.findSpan(v);
+    double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
+    basisFunctionsWithDerivative(u_, su, u, Nu, dNu);
+    basisFunctionsWithDerivative(v_, sv, v, Nv, dNv);
+    HomogeneousPoint3 S = HomogeneousPoint3::Zero(), Su = S, Sv = S;
+    for (int k = 0; k <= pu; ++k) {
+        HomogeneousPoint3 inner = HomogeneousPoint3::Zero(), innerDv = inner;
+        const HomogeneousPoint3* row = &poles_[(su - pu + k) * countV_ + (sv - pv)];
+        for (int l = 0; l <= pv; ++l) {
+            inner += Nv[l] * row[l];
+            innerDv += dNv[l] * row[l];
+        }
+        S += Nu[k] * inner;
+        Su += dNu[k] * inner;
+        Sv += Nu[k] * innerDv;
+    }
+    // quotient rule for the rational case (NURBS Book, equation 4.19)
+    FirstDerivatives d;
+    const double w = S[3];
+    d.point = S.head<3>() / w;
+    d.du = (Su.head<3>() - Su[3] * d.point) / w;
+    d.dv = (Sv.head<3>() - Sv[3] * d.point) / w;
+    return d;
+}
+
+Vector3 BSplineSurface::normal(double u, double v) const {
+    auto d = derivatives(u, v);
+    Vector3 n = d.du.cross(d.dv);
+    const double scale = d.du.norm() * d.dv.norm();
+    if (n.norm() > 1e-12 * scale && scale > 0) return n.normalized();
+    // degenerate: step towards the middle of the domain in growing steps
+    const double um = 0.5 * (u_.first() + u_.last()), vm = 0.5 * (v_.first() + v_.last());
+    for (double step = 1e-7; step < 0.2; step *= 10) {
+        const double uu = u + step * (um - u) + step * (u_.last() - u_.first()) * 1e-3 *
+                                                    (um >= u ? 1.0 : -1.0);
+        const double vv = v + step * (vm - v) + step * (v_.last() - v_.first()) * 1e-3 *
+                                                    (vm >= v ? 1.0 : -1.0);
+        d = derivatives(uu, vv);
+        n = d.du.cross(d.dv);
+        if (n.norm() > 1e-12 * d.du.norm() * d.dv.norm() && n.norm() > 0) return n.normalized();
+    }
+    return Vector3(0, 0, 1);
+}
+
+std::optional<std::string> BSplineSurface::problem() const {
+    if (countU_ < 2 || countV_ < 2) return "fewer than 2 control points in u or v";
+    if (static_cast<int>(poles_.size()) != countU_ * countV_)
+        return "control point count does not match the grid";
+    if (auto p = u_.problem(countU_)) return "u knots: " + *p;
+    if (auto p = v_.problem(countV_)) return "v knots: " + *p;
+    for (size_t k = 0; k < poles_.size(); ++k) {
+        const auto& p = poles_[k];
+        if (!p.allFinite()) return "control point " + std::to_string(k) + " is not finite";
+        if (!(p[3] > 0)) return "weight of control point " + std::to_string(k) + " is <= 0";
+    }
+    return std::nullopt;
+}
+
+}  // namespace nurbslod

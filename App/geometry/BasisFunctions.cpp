@@ -1,0 +1,64 @@
+#include "geometry/BasisFunctions.hpp"
+
+namespace nurbslod {
+
+void basisFunctions(const KnotVector& knots, int span, double t, double* out) {
+    const int p = knots.degree();
+    const auto& U = knots.knots();
+    double left[kMaxDegree + 1], right[kMaxDegree + 1];
+    out[0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - U[span + 1 - j];
+        right[j] = U[span + j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double denominator = right[r + 1] + left[j - r];
+            const double temp = denominator != 0.0 ? out[r] / denominator : 0.0;
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+}
+
+void basisFunctionsWithDerivative(const KnotVector& knots, int span, double t, double* values,
+                                  double* derivatives) {
+    const int p = knots.degree();
+    const auto& U = knots.knots();
+    // ndu holds the basis functions (upper triangle) and knot differences (lower triangle)
+    double ndu[kMaxDegree + 1][kMaxDegree + 1];
+    double left[kMaxDegree + 1], right[kMaxDegree + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - U[span + 1 - j];
+        right[j] = U[span + j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = ndu[j][r] != 0.0 ? ndu[r][j - 1] / ndu[j][r] : 0.0;
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j) values[j] = ndu[j][p];
+    if (p == 0) {
+        derivatives[0] = 0.0;
+        return;
+    }
+    // N'_{i,p} = p (N_{i,p-1}/(u_{i+p}-u_i) - N_{i+1,p-1}/(u_{i+p+1}-u_{i+1}))
+    for (int r = 0; r <= p; ++r) {
+        double d = 0.0;
+        if (r >= 1) {
+            const double denominator = ndu[p][r - 1];
+            if (denominator != 0.0) d += ndu[r - 1][p - 1] / denominator;
+        }
+        if (r <= p - 1) {
+            const double denominator = ndu[p][r];
+            if (denominator != 0.0) d -= ndu[r][p - 1] / denominator;
+        }
+        derivatives[r] = p * d;
+    }
+}
+
+}  // namespace nurbslod

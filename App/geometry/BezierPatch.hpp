@@ -1,0 +1,38 @@
+#pragma once
+
+#include <vector>
+
+#include "geometry/Point.hpp"
+
+namespace nurbslod {
+
+// A (rational) tensor-product Bezier patch over the local square [0,1]^2, homogeneous control
+// points P^w_ij with i along u (0..degreeU) and j along v (0..degreeV).
+class BezierPatch {
+public:
+    BezierPatch() = default;
+    BezierPatch(int degreeU, int degreeV);
+
+    int degreeU() const { return degreeU_; }
+    int degreeV() const { return degreeV_; }
+    HomogeneousPoint3& pole(int i, int j) { return poles_[i * (degreeV_ + 1) + j]; }
+    const HomogeneousPoint3& pole(int i, int j) const { return poles_[i * (degreeV_ + 1) + j]; }
+    Point3 pole3(int i, int j) const { return projectHomogeneous(pole(i, j)); }
+
+    // The patch restricted to [u0,u1] x [v0,v1] (local parameters), by de Casteljau
+    // subdivision: an exact reparameterisation, so its control net bounds that piece.
+    BezierPatch restricted(double u0, double u1, double v0, double v1) const;
+
+    // Point at local parameters (s, t), by de Casteljau.
+    Point3 point(double s, double t) const;
+
+private:
+    int degreeU_ = 0, degreeV_ = 0;
+    std::vector<HomogeneousPoint3> poles_;
+};
+
+// Restrict the Bezier curve with `degree`+1 control points at pts[0], pts[stride], ... to the
+// local interval [a, b] in place.
+void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b);
+
+}  // namespace nurbslod

@@ -1,0 +1,1 @@
+#include "occ/ModelImporter.hpp"

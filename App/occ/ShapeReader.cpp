@@ -1,0 +1,1 @@
+#include "occ/ShapeReader.hpp"

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace nurbslod {
+
+enum class ErrorMode {
+    Guaranteed,   // conservative bound: the mesh never deviates more than the tolerance
+    Approximate,  // the paper's approximate error (section 5.2): fewer triangles
+};
+
+struct TessellationOptions {
+    double tolerance = 0;  // absolute, in model units; > 0
+    ErrorMode mode = ErrorMode::Guaranteed;
+    int threads = 0;  // 0: all cores
+    // Called from worker threads as faces finish: (faces done, faces in all).
+    std::function<void(std::size_t, std::size_t)> progress;
+};
+
+}  // namespace nurbslod
