@@ -1,1 +1,237 @@
 #include "occ/ModelImporter.hpp"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2dConvert_ApproxCurve.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_BezierCurve.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <cmath>
+#include <optional>
+
+namespace nurbslod::occ {
+
+namespace {
+
+BSplineSurface toSurface(const Handle(Geom_BSplineSurface) & s) {
+    std::vector<double> knotsU(s->NbUKnots() ? 0 : 0), knotsV;
+    TColStd_Array1OfReal ku(1, s->NbUPoles() + s->UDegree() + 1);
+    TColStd_Array1OfReal kv(1, s->NbVPoles() + s->VDegree() + 1);
+    s->UKnotSequence(ku);
+    s->VKnotSequence(kv);
+    for (int i = ku.Lower(); i <= ku.Upper(); ++i) knotsU.push_back(ku(i));
+    for (int i = kv.Lower(); i <= kv.Upper(); ++i) knotsV.push_back(kv(i));
+    const int nu = s->NbUPoles(), nv = s->NbVPoles();
+    std::vector<HomogeneousPoint3> poles(static_cast<size_t>(nu * nv));
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const gp_Pnt p = s->Pole(i + 1, j + 1);
+            const double w = s->Weight(i + 1, j + 1);
+            poles[i * nv + j] = HomogeneousPoint3(w * p.X(), w * p.Y(), w * p.Z(), w);
+        }
+    return BSplineSurface(KnotVector(s->UDegree(), std::move(knotsU)),
+                          KnotVector(s->VDegree(), std::move(knotsV)), nu, nv, std::move(poles));
+}
+
+BSplineCurve2d toCurve(const Handle(Geom2d_BSplineCurve) & c) {
+    std::vector<double> knots;
+    TColStd_Array1OfReal k(1, c->NbPoles() + c->Degree() + 1);
+    c->KnotSequence(k);
+    for (int i = k.Lower(); i <= k.Upper(); ++i) knots.push_back(k(i));
+    std::vector<HomogeneousPoint2> poles;
+    for (int i = 1; i <= c->NbPoles(); ++i) {
+        const gp_Pnt2d p = c->Pole(i);
+        const double w = c->Weight(i);
+        poles.emplace_back(w * p.X(), w * p.Y(), w);
+    }
+    return BSplineCurve2d(KnotVector(c->Degree(), std::move(knots)), std::move(poles));
+}
+
+// The pcurve over [first, last] as a B-spline with the SAME parameter as the edge: the edge
+// parameter is what every face of the edge shares. Lines, Beziers and B-splines convert
+// exactly; conics would be reparameterised by an exact conversion, so they are approximated
+// in their own parameter instead (to far below any display or export tolerance).
+Handle(Geom2d_BSplineCurve) pcurveAsBSpline(const Handle(Geom2d_Curve) & curve, double first,
+                                            double last) {
+    Handle(Geom2d_Curve) basis = curve;
+    while (auto trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(basis))
+        basis = trimmed->BasisCurve();
+    Handle(Geom2d_BSplineCurve) result;
+    if (auto bspline = Handle(Geom2d_BSplineCurve)::DownCast(basis)) {
+        result = Handle(Geom2d_BSplineCurve)::DownCast(bspline->Copy());
+        if (result->IsPeriodic()) result->SetNotPeriodic();
+    } else if (basis->IsKind(STANDARD_TYPE(Geom2d_Line)) ||
+               basis->IsKind(STANDARD_TYPE(Geom2d_BezierCurve))) {
+        result = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(basis, first, last));
+    } else {
+        Handle(Geom2d_TrimmedCurve) piece = new Geom2d_TrimmedCurve(basis, first, last);
+        Geom2dConvert_ApproxCurve approx(piece, 1e-9 * std::max(1.0, piece->Value(first).XY().Modulus()),
+                                         GeomAbs_C2, 200, 9);
+        if (!approx.HasResult()) throw Standard_Failure("a trimming curve could not be converted");
+        result = approx.Curve();
+    }
+    return result;
+}
+
+Handle(Geom_BSplineSurface) surfaceAsBSpline(const TopoDS_Face& face) {
+    TopLoc_Location location;
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
+    if (surface.IsNull()) throw Standard_Failure("the face has no surface");
+    Handle(Geom_Surface) basis = surface;
+    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
+        basis = trimmed->BasisSurface();
+    Handle(Geom_BSplineSurface) bspline = Handle(Geom_BSplineSurface)::DownCast(basis);
+    if (bspline.IsNull()) {
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        bspline = GeomConvert::SurfaceToBSplineSurface(
+            new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1));
+    } else {
+        bspline = Handle(Geom_BSplineSurface)::DownCast(bspline->Copy());
+    }
+    // Unclamped (periodic) knots would break the Bezier extraction; clamp them. The parameter
+    // does not change, so the pcurves stay valid.
+    if (bspline->IsUPeriodic()) bspline->SetUNotPeriodic();
+    if (bspline->IsVPeriodic()) bspline->SetVNotPeriodic();
+    if (!location.IsIdentity()) bspline->Transform(location.Transformation());
+    return bspline;
+}
+
+TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
+                    const TopTools_IndexedMapOfShape& edges) {
+    TrimLoop loop;
+    std::vector<TopoDS_Edge> ordered;
+    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) ordered.push_back(it.Current());
+    // The wire explorer drops edges of sloppy wires it cannot chain; fall back to file order.
+    size_t count = 0;
+    for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next()) ++count;
+    if (ordered.size() != count) {
+        ordered.clear();
+        for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next())
+            ordered.push_back(TopoDS::Edge(it.Current()));
+    }
+    for (const TopoDS_Edge& edge : ordered) {
+        TrimCurve curve;
+        double first = 0, last = 0;
+        Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        if (pcurve.IsNull()) throw Standard_Failure("an edge has no curve on the face");
+        if (!(last > first) || !std::isfinite(first) || !std::isfinite(last))
+            throw Standard_Failure("an edge has an empty or infinite parameter range");
+        curve.pcurve = toCurve(pcurveAsBSpline(pcurve, first, last));
+        curve.first = first;
+        curve.last = last;
+        curve.edge = edges.FindIndex(edge) - 1;
+        curve.reversed = edge.Orientation() == TopAbs_REVERSED;
+        curve.seam = BRep_Tool::IsClosed(edge, face);
+        curve.degenerated = BRep_Tool::Degenerated(edge);
+        loop.curves.push_back(std::move(curve));
+    }
+    return loop;
+}
+
+TrimmedSurface importFace(const TopoDS_Face& face, int index,
+                          const TopTools_IndexedMapOfShape& edges) {
+    TrimmedSurface result;
+    result.faceIndex = index;
+    result.reversed = face.Orientation() == TopAbs_REVERSED;
+    result.surface = toSurface(surfaceAsBSpline(face));
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
+        const TopoDS_Wire wire = TopoDS::Wire(it.Current());
+        TrimLoop loop = importLoop(wire, face, edges);
+        loop.outer = wire.IsSame(outer);
+        if (!loop.curves.empty()) result.loops.push_back(std::move(loop));
+    }
+    if (result.loops.empty()) throw Standard_Failure("the face has no trimming loop");
+    return result;
+}
+
+}  // namespace
+
+Model importModel(const TopoDS_Shape& original) {
+    Model model;
+    TopTools_IndexedMapOfShape originalFaces;
+    TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
+
+    // Convert the whole shape at once so that the converted faces still share their converted
+    // edges (and the edges' common parameter). If that fails, convert face by face.
+    std::optional<BRepBuilderAPI_NurbsConvert> converter;
+    TopoDS_Shape converted;
+    try {
+        converter.emplace(original, Standard_False);
+        if (converter->IsDone()) converted = converter->Shape();
+    } catch (const Standard_Failure&) {
+        converted.Nullify();
+    }
+
+    TopTools_IndexedMapOfShape edges, vertices;
+    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_EDGE, edges);
+    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_VERTEX, vertices);
+
+    model.faces.resize(originalFaces.Extent());
+    for (int k = 1; k <= originalFaces.Extent(); ++k) {
+        const TopoDS_Face originalFace = TopoDS::Face(originalFaces(k));
+        try {
+            TopoDS_Face face;
+            if (!converted.IsNull()) {
+                face = TopoDS::Face(converter->ModifiedShape(originalFace));
+            } else {
+                BRepBuilderAPI_NurbsConvert single(originalFace, Standard_False);
+                face = TopoDS::Face(single.Shape());
+            }
+            model.faces[k - 1] = importFace(face, k, edges);
+        } catch (const Standard_Failure& failure) {
+            model.faces[k - 1].faceIndex = k;
+            model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
+        }
+        if (model.faces[k - 1].error.empty())
+            if (auto problem = model.faces[k - 1].surface.problem())
+                model.faces[k - 1].error = "invalid surface: " + *problem;
+    }
+
+    model.vertices.resize(vertices.Extent());
+    for (int k = 1; k <= vertices.Extent(); ++k) {
+        const TopoDS_Vertex& vertex = TopoDS::Vertex(vertices(k));
+        const gp_Pnt p = BRep_Tool::Pnt(vertex);
+        model.vertices[k - 1] = {Point3(p.X(), p.Y(), p.Z()), BRep_Tool::Tolerance(vertex)};
+    }
+    model.edges.resize(edges.Extent());
+    for (int k = 1; k <= edges.Extent(); ++k) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges(k));
+        TopoDS_Vertex first, last;
+        TopExp::Vertices(edge, first, last);
+        ModelEdge& e = model.edges[k - 1];
+        e.firstVertex = first.IsNull() ? -1 : vertices.FindIndex(first) - 1;
+        e.lastVertex = last.IsNull() ? -1 : vertices.FindIndex(last) - 1;
+        e.tolerance = BRep_Tool::Tolerance(edge);
+        e.degenerated = BRep_Tool::Degenerated(edge);
+    }
+
+    Bnd_Box box;
+    BRepBndLib::Add(original, box);
+    if (!box.IsVoid()) {
+        box.SetGap(0.0);
+        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
+    }
+    return model;
+}
+
+}  // namespace nurbslod::occ

@@ -1,11 +1,399 @@
 #include "tessellate/ModelTessellator.hpp"
 
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
 #include <stdexcept>
+#include <string>
+
+#include "tessellate/ErrorBudget.hpp"
+#include "tessellate/FaceTessellator.hpp"
+#include "trim/EdgeDiscretizer.hpp"
 
 namespace nurbslod {
 
-TessellationResult tessellateModel(const Model&, const TessellationOptions&) {
-    throw std::logic_error("tessellateModel: not written yet");
+namespace {
+
+// One face's use of an edge: which face, loop and trimming curve.
+struct EdgeUse {
+    int face, loop, curve;
+};
+
+// An edge's shared polyline: parameters, and per use the (u, v) and vertex id of each point,
+// plus the points that faces' cell sides added inside segments.
+struct EdgePolyline {
+    std::vector<double> params;
+    std::vector<std::vector<Point2>> uv;                // [use][k]
+    std::vector<std::vector<std::uint32_t>> vertices;   // [use][k]
+    struct Inserted {
+        double lambda;
+        std::vector<std::uint32_t> vertices;  // per use
+    };
+    std::vector<std::vector<Inserted>> inserted;  // [segment]
+};
+
+Point3 centroid(const std::vector<Point3>& points) {
+    Point3 c = Point3::Zero();
+    for (const auto& p : points) c += p;
+    return c / static_cast<double>(points.size());
+}
+
+double spread(const std::vector<Point3>& points) {
+    double d = 0;
+    for (size_t i = 0; i < points.size(); ++i)
+        for (size_t j = i + 1; j < points.size(); ++j) d = std::max(d, (points[i] - points[j]).norm());
+    return d;
+}
+
+}  // namespace
+
+TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
+    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+        throw std::invalid_argument("the tolerance must be a positive number, not " +
+                                    std::to_string(options.tolerance));
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<tbb::global_control> threads;
+    if (options.threads > 0)
+        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                        options.threads);
+    const ErrorBudget budget = ErrorBudget::of(options.tolerance, options.mode);
+    const int faceCount = static_cast<int>(model.faces.size());
+
+    TessellationResult result;
+    result.faces = faceCount;
+    result.tolerance = options.tolerance;
+    std::vector<std::string> failure(faceCount);
+
+    // faces that can take part: imported, valid surface and trimming curves
+    for (int f = 0; f < faceCount; ++f) {
+        const auto& face = model.faces[f];
+        if (!face.error.empty()) {
+            failure[f] = face.error;
+            continue;
+        }
+        if (auto p = face.surface.problem()) {
+            failure[f] = "invalid surface: " + *p;
+            continue;
+        }
+        for (const auto& loop : face.loops)
+            for (const auto& curve : loop.curves)
+                if (auto p = curve.pcurve.problem(); p && failure[f].empty()) failure[f] = *p;
+                else if (failure[f].empty() && (curve.edge < 0 || curve.edge >= int(model.edges.size())))
+                    failure[f] = "a trimming curve names no edge of the model";
+    }
+
+    // edges and their uses
+    std::vector<std::vector<EdgeUse>> uses(model.edges.size());
+    for (int f = 0; f < faceCount; ++f) {
+        if (!failure[f].empty()) continue;
+        const auto& face = model.faces[f];
+        for (int l = 0; l < int(face.loops.size()); ++l)
+            for (int c = 0; c < int(face.loops[l].curves.size()); ++c)
+                uses[face.loops[l].curves[c].edge].push_back({f, l, c});
+    }
+    auto curveOf = [&](const EdgeUse& u) -> const TrimCurve& {
+        return model.faces[u.face].loops[u.loop].curves[u.curve];
+    };
+    auto curveOnSurface = [&](const EdgeUse& u) {
+        const TrimCurve& c = curveOf(u);
+        return CurveOnSurface(model.faces[u.face].surface, c.pcurve, c.first, c.last);
+    };
+
+    // 1. every edge discretised once for all its faces (sections 4 and 5.1)
+    std::vector<EdgePolyline> polylines(model.edges.size());
+    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+        if (uses[e].empty()) return;
+        std::vector<CurveOnSurface> curves;
+        for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
+        auto& poly = polylines[e];
+        poly.params = model.edges[e].degenerated
+                          ? std::vector<double>{0.0, 1.0}
+                          : discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
+        poly.uv.resize(curves.size());
+        for (size_t k = 0; k < curves.size(); ++k)
+            for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
+    });
+
+    // 2. shared vertices: B-rep vertices first, then the inner points of every edge
+    std::vector<Point3> positions;
+    std::map<std::pair<int, int>, std::uint32_t> vertexOfBrepVertex;  // (vertex, face or -1)
+    {
+        // endpoint positions of every use, by B-rep vertex
+        std::map<int, std::vector<std::pair<int, Point3>>> endpoints;
+        for (size_t e = 0; e < model.edges.size(); ++e) {
+            if (uses[e].empty()) continue;
+            const ModelEdge& edge = model.edges[e];
+            for (size_t k = 0; k < uses[e].size(); ++k) {
+                const auto curve = curveOnSurface(uses[e][k]);
+                if (edge.firstVertex >= 0)
+                    endpoints[edge.firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
+                if (edge.lastVertex >= 0)
+                    endpoints[edge.lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
+            }
+        }
+        for (auto& [vertex, list] : endpoints) {
+            std::vector<Point3> all;
+            for (auto& [face, p] : list) all.push_back(p);
+            if (spread(all) <= budget.shareGap) {
+                vertexOfBrepVertex[{vertex, -1}] = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(centroid(all));
+                continue;
+            }
+            std::map<int, std::vector<Point3>> byFace;
+            for (auto& [face, p] : list) byFace[face].push_back(p);
+            for (auto& [face, points] : byFace) {
+                vertexOfBrepVertex[{vertex, face}] = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(centroid(points));
+            }
+        }
+    }
+    auto brepVertexId = [&](int vertex, int face) -> std::uint32_t {
+        if (auto it = vertexOfBrepVertex.find({vertex, -1}); it != vertexOfBrepVertex.end()) return it->second;
+        return vertexOfBrepVertex.at({vertex, face});
+    };
+    for (size_t e = 0; e < model.edges.size(); ++e) {
+        if (uses[e].empty()) continue;
+        auto& poly = polylines[e];
+        const ModelEdge& edge = model.edges[e];
+        const size_t n = poly.params.size();
+        poly.vertices.assign(uses[e].size(), std::vector<std::uint32_t>(n));
+        poly.inserted.assign(n - 1, {});
+        std::vector<CurveOnSurface> curves;
+        for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
+        for (size_t k = 0; k < n; ++k) {
+            const bool first = k == 0, last = k + 1 == n;
+            if ((first && edge.firstVertex >= 0) || (last && edge.lastVertex >= 0) ||
+                (edge.degenerated && edge.firstVertex >= 0)) {
+                const int vertex = (last && !edge.degenerated) ? edge.lastVertex : edge.firstVertex;
+                for (size_t u = 0; u < uses[e].size(); ++u)
+                    poly.vertices[u][k] = brepVertexId(vertex, uses[e][u].face);
+                continue;
+            }
+            std::vector<Point3> points;
+            for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
+            if (spread(points) <= budget.shareGap) {
+                const auto id = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(centroid(points));
+                for (auto& v : poly.vertices) v[k] = id;
+            } else {
+                for (size_t u = 0; u < points.size(); ++u) {
+                    poly.vertices[u][k] = static_cast<std::uint32_t>(positions.size());
+                    positions.push_back(points[u]);
+                }
+            }
+        }
+    }
+
+    // where each use sits in its edge's list of uses
+    std::map<std::tuple<int, int, int>, int> useIndex;
+    for (size_t e = 0; e < uses.size(); ++e)
+        for (size_t u = 0; u < uses[e].size(); ++u)
+            useIndex[{uses[e][u].face, uses[e][u].loop, uses[e][u].curve}] = static_cast<int>(u);
+
+    // exact integer points of cuts, by (face, shared vertex)
+    std::map<std::pair<int, std::uint32_t>, std::pair<std::int64_t, std::int64_t>> exactPoints;
+
+    // a face's boundary polygons from the shared polylines
+    auto boundaryOf = [&](int f) {
+        std::vector<BoundaryLoop> loops;
+        const auto& face = model.faces[f];
+        for (int l = 0; l < int(face.loops.size()); ++l) {
+            BoundaryLoop loop;
+            for (int c = 0; c < int(face.loops[l].curves.size()); ++c) {
+                const TrimCurve& curve = face.loops[l].curves[c];
+                const int e = curve.edge;
+                const int u = useIndex.at({f, l, c});
+                const auto& poly = polylines[e];
+                // the curve's points in edge order, with the segment each one starts
+                std::vector<BoundaryPoint> points;
+                std::vector<int> segmentAfter;
+                const size_t n = poly.params.size();
+                for (size_t k = 0; k < n; ++k) {
+                    points.push_back({poly.uv[u][k], poly.vertices[u][k]});
+                    segmentAfter.push_back(static_cast<int>(k));
+                    if (k + 1 == n) break;
+                    for (const auto& ins : poly.inserted[k]) {
+                        BoundaryPoint p{(1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
+                                        ins.vertices[u]};
+                        if (auto it = exactPoints.find({f, p.vertex}); it != exactPoints.end()) {
+                            p.exact = true;
+                            p.x = it->second.first;
+                            p.y = it->second.second;
+                        }
+                        points.push_back(p);
+                        segmentAfter.push_back(static_cast<int>(k));
+                    }
+                }
+                const bool forward = !curve.reversed;
+                if (!forward) {
+                    std::reverse(points.begin(), points.end());
+                    std::reverse(segmentAfter.begin(), segmentAfter.end());
+                }
+                // join to the previous curve: the same vertex is one point; otherwise a gap
+                size_t startIndex = 0;
+                if (!loop.points.empty() && loop.points.back().vertex == points.front().vertex &&
+                    points.size() > 1) {
+                    startIndex = 1;
+                    loop.origins.back() = {e, forward ? segmentAfter[0] : segmentAfter[1], forward};
+                }
+                for (size_t i = startIndex; i < points.size(); ++i) {
+                    loop.points.push_back(points[i]);
+                    // segment from this point to the next one of the curve
+                    int segment = forward ? segmentAfter[i] : (i + 1 < points.size() ? segmentAfter[i + 1] : 0);
+                    loop.origins.push_back({e, segment, forward});
+                }
+                loop.origins.back() = {-1, 0, true};  // to the next curve, until joined
+            }
+            // close: the last point equal to the first is one point
+            if (loop.points.size() > 1 && loop.points.back().vertex == loop.points.front().vertex) {
+                // the segment into the dropped point now closes the loop: its origin holds
+                loop.points.pop_back();
+                loop.origins.pop_back();
+            }
+            if (loop.points.size() >= 3) loops.push_back(std::move(loop));
+        }
+        return loops;
+    };
+
+    // 3. first pass over faces: kd-trees and the cuts of cell sides with the boundary
+    std::vector<std::unique_ptr<FaceTessellator>> tessellators(faceCount);
+    std::vector<std::vector<BoundaryCrossing>> crossings(faceCount);
+    std::atomic<std::size_t> done{0};
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        if (!failure[f].empty()) return;
+        try {
+            tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
+            crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
+        } catch (const std::exception& e) {
+            failure[f] = e.what();
+            tessellators[f].reset();
+        }
+    });
+
+    // 4. every cut joins its edge's polyline, for both faces of the edge
+    {
+        std::map<std::pair<int, int>, std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>> cuts;
+        for (int f = 0; f < faceCount; ++f)
+            for (const auto& c : crossings[f]) cuts[{c.edge, c.segment}].push_back({c.lambda, f, c.x, c.y});
+        for (auto& [key, list] : cuts) {
+            auto [e, k] = key;
+            auto& poly = polylines[e];
+            std::sort(list.begin(), list.end());
+            const size_t useCount = uses[e].size();
+            bool sharedEnds = true;
+            for (size_t u = 1; u < useCount; ++u)
+                sharedEnds &= poly.vertices[u][k] == poly.vertices[0][k] &&
+                              poly.vertices[u][k + 1] == poly.vertices[0][k + 1];
+            double lastLambda = -1;
+            if (std::getenv("NURBSLOD_DEBUG2")) {
+                std::fprintf(stderr, "edge %d seg %d uses", e, k);
+                for (auto& u : uses[e]) std::fprintf(stderr, " %d", u.face + 1);
+                std::fprintf(stderr, " cuts");
+                for (auto& [lambda, f, x, y] : list) std::fprintf(stderr, " (%.4f by %d)", lambda, f + 1);
+                std::fprintf(stderr, "\n");
+            }
+            for (auto& [lambda, f, x, y] : list) {
+                if (lambda <= 0 || lambda >= 1) continue;
+                if (lambda - lastLambda > 1e-9) {
+                    EdgePolyline::Inserted ins{lambda, std::vector<std::uint32_t>(useCount)};
+                    for (size_t u = 0; u < useCount; ++u) {
+                        if (sharedEnds && u > 0) {
+                            ins.vertices[u] = ins.vertices[0];
+                            continue;
+                        }
+                        ins.vertices[u] = static_cast<std::uint32_t>(positions.size());
+                        positions.push_back((1 - lambda) * positions[poly.vertices[u][k]] +
+                                            lambda * positions[poly.vertices[u][k + 1]]);
+                    }
+                    poly.inserted[k].push_back(std::move(ins));
+                    lastLambda = lambda;
+                }
+                // the face that found the cut places it exactly where its clipper did
+                for (size_t u = 0; u < useCount; ++u)
+                    if (uses[e][u].face == f)
+                        exactPoints[{f, poly.inserted[k].back().vertices[u]}] = {x, y};
+            }
+        }
+    }
+
+    // 5. second pass: cut and triangulate with the completed boundaries
+    std::vector<FaceMesh> faceMeshes(faceCount);
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        if (tessellators[f]) {
+            try {
+                faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions);
+                if (faceMeshes[f].triangles.empty()) failure[f] = "no triangles inside the trimming loops";
+            } catch (const std::exception& e) {
+                failure[f] = e.what();
+            }
+            tessellators[f].reset();
+        }
+        const std::size_t n = ++done;
+        if (options.progress) options.progress(n, static_cast<std::size_t>(faceCount));
+    });
+
+    if (std::getenv("NURBSLOD_DEBUG"))
+        for (int f = 0; f < faceCount; ++f) {
+            std::size_t gaps = 0, segs = 0;
+            if (failure[f].empty())
+                for (const auto& loop : boundaryOf(f))
+                    for (const auto& o : loop.origins) gaps += o.edge < 0, ++segs;
+            std::fprintf(stderr, "face %d crossings %zu unmatched %zu cells %zu gaps %zu/%zu\n", f + 1,
+                         crossings[f].size(), faceMeshes[f].unmatchedCrossings, faceMeshes[f].cells, gaps, segs);
+        }
+
+    // 6. one mesh: shared positions first, then each face's own points, in face order
+    Mesh& mesh = result.mesh;
+    mesh.positions = std::move(positions);
+    std::vector<char> used(mesh.positions.size(), 0);
+    for (int f = 0; f < faceCount; ++f) {
+        if (!failure[f].empty()) {
+            result.failures.push_back({f + 1, failure[f]});
+            continue;
+        }
+        const FaceMesh& fm = faceMeshes[f];
+        std::vector<std::uint32_t> global(fm.vertices.size());
+        const auto normalBase = static_cast<std::uint32_t>(mesh.normals.size());
+        for (size_t i = 0; i < fm.vertices.size(); ++i) {
+            const auto& v = fm.vertices[i];
+            if (v.shared) {
+                global[i] = v.sharedId;
+            } else {
+                global[i] = static_cast<std::uint32_t>(mesh.positions.size());
+                mesh.positions.push_back(v.position);
+                used.push_back(0);
+            }
+            mesh.normals.push_back(v.normal);
+        }
+        for (const auto& t : fm.triangles) {
+            mesh.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
+            mesh.triangleNormals.push_back({normalBase + t[0], normalBase + t[1], normalBase + t[2]});
+            mesh.triangleFaces.push_back(f + 1);
+            for (auto i : t) used[global[i]] = 1;
+        }
+    }
+    // drop shared positions no triangle uses (edges of failed faces)
+    std::vector<std::uint32_t> remap(mesh.positions.size());
+    std::vector<Point3> kept;
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        if (used[i]) {
+            remap[i] = static_cast<std::uint32_t>(kept.size());
+            kept.push_back(mesh.positions[i]);
+        }
+    mesh.positions = std::move(kept);
+    for (auto& t : mesh.triangles)
+        for (auto& i : t) i = remap[i];
+
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
 }
 
 }  // namespace nurbslod

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/Point.hpp"
+
+namespace nurbslod {
+
+// The triangles of one face before they join the model's mesh. A vertex is either shared with
+// other faces (an edge vertex, by id) or the face's own (a surface point).
+struct FaceMesh {
+    struct Vertex {
+        bool shared = false;
+        std::uint32_t sharedId = 0;
+        Point3 position;  // for the face's own vertices
+        Vector3 normal;   // the face's exact normal at the vertex
+    };
+    std::vector<Vertex> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise
+    std::size_t cells = 0;
+    std::size_t unmatchedCrossings = 0;  // boundary points no other face knows (open edges)
+    bool toleranceReached = true;        // false where the kd-tree hit its depth limit
+};
+
+}  // namespace nurbslod

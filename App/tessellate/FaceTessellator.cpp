@@ -1,0 +1,650 @@
+#include "tessellate/FaceTessellator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "tessellate/CellErrorBound.hpp"
+#include "tessellate/PolygonTriangulator.hpp"
+
+namespace nurbslod {
+
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+
+namespace {
+
+// Integer steps across the boundary's bounding box: 2^30 keeps Clipper in its fast 64-bit
+// range, and 1e-9 of a face is far below any tolerance a user asks for.
+constexpr cInt kScale = cInt(1) << 30;
+// Deep enough for 2^-60 of a face; a face that needs more is broken, and is reported.
+constexpr int kMaxDepth = 60;
+
+std::int64_t keyOf(cInt x, cInt y) { return (x << 32) ^ (y & 0xffffffff); }
+
+struct Rect {
+    cInt x0, y0, x1, y1;
+    Path path() const { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+};
+
+Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear) {
+    ClipperLib::Clipper clipper;
+    clipper.PreserveCollinear(preserveCollinear);
+    clipper.AddPaths(subject, ClipperLib::ptSubject, true);
+    clipper.AddPath(r.path(), ClipperLib::ptClip, true);
+    Paths out;
+    clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
+    return out;
+}
+
+// The region covers the rectangle grown by one step: no boundary point can lie on the cell.
+bool coversWithMargin(const Paths& region, const Rect& r) {
+    const Rect grown{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1};
+    const Paths inside = clip(region, grown, false);
+    if (inside.size() != 1 || inside[0].size() != 4) return false;
+    for (const IntPoint& p : inside[0])
+        if ((p.X != grown.x0 && p.X != grown.x1) || (p.Y != grown.y0 && p.Y != grown.y1))
+            return false;
+    return true;
+}
+
+// Squared distance from p to segment ab, and the parameter of the nearest point.
+std::pair<double, double> segmentDistance(const IntPoint& p, const IntPoint& a, const IntPoint& b) {
+    const double ax = double(a.X), ay = double(a.Y);
+    const double dx = double(b.X) - ax, dy = double(b.Y) - ay;
+    const double length2 = dx * dx + dy * dy;
+    double t = length2 > 0 ? ((double(p.X) - ax) * dx + (double(p.Y) - ay) * dy) / length2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double ex = ax + t * dx - double(p.X), ey = ay + t * dy - double(p.Y);
+    return {ex * ex + ey * ey, t};
+}
+
+}  // namespace
+
+// The face's integer frame and the loop data the cutting looks up.
+struct FaceTessellator::Frame {
+    double u0 = 0, v0 = 0, scaleU = 1, scaleV = 1;
+    std::vector<cInt> breaksX, breaksY;  // Bezier span borders strictly inside the frame
+
+    IntPoint toInteger(const Point2& uv) const {
+        return {static_cast<cInt>(std::llround((uv.x() - u0) * scaleU)),
+                static_cast<cInt>(std::llround((uv.y() - v0) * scaleV))};
+    }
+    Point2 toParameter(cInt x, cInt y) const {
+        return {u0 + static_cast<double>(x) / scaleU, v0 + static_cast<double>(y) / scaleV};
+    }
+};
+
+// A kd-tree node: a leaf (a cell to triangulate) or a split into two children. The tree is kept
+// so that the second pass can cut the completed boundary down it again, node by node.
+struct FaceTessellator::Leaf {
+    Rect rect;
+    bool full = false;  // inside the region with a margin: no boundary point touches it
+    int children[2] = {-1, -1};
+    bool leaf = false;
+};
+
+namespace {
+
+// Boundary polygons and a coarse grid over their segments, to find which segment a point that
+// the clipper made lies on.
+struct BoundaryIndex {
+    struct Segment {
+        IntPoint a, b;
+        int loop, index;
+    };
+    std::vector<Segment> segments;
+    std::unordered_map<std::int64_t, std::pair<int, int>> corners;  // integer point -> loop, index
+    int cellsPerSide = 1;
+    std::vector<std::vector<int>> buckets;
+
+    int bucketOf(cInt c) const {
+        return static_cast<int>(std::clamp<cInt>(c * cellsPerSide / (kScale + 1), 0, cellsPerSide - 1));
+    }
+
+    void build(const std::vector<std::vector<IntPoint>>& loops) {
+        for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
+            const auto& loop = loops[l];
+            for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
+                corners.emplace(keyOf(loop[i].X, loop[i].Y), std::make_pair(l, i));
+                segments.push_back({loop[i], loop[(i + 1) % loop.size()], l, i});
+            }
+        }
+        cellsPerSide = std::clamp(static_cast<int>(std::sqrt(double(segments.size()))), 1, 512);
+        buckets.assign(static_cast<size_t>(cellsPerSide * cellsPerSide), {});
+        for (int s = 0; s < static_cast<int>(segments.size()); ++s) {
+            const auto& seg = segments[s];
+            const int bx0 = bucketOf(std::min(seg.a.X, seg.b.X) - 2);
+            const int bx1 = bucketOf(std::max(seg.a.X, seg.b.X) + 2);
+            const int by0 = bucketOf(std::min(seg.a.Y, seg.b.Y) - 2);
+            const int by1 = bucketOf(std::max(seg.a.Y, seg.b.Y) + 2);
+            for (int bx = bx0; bx <= bx1; ++bx)
+                for (int by = by0; by <= by1; ++by) buckets[bx * cellsPerSide + by].push_back(s);
+        }
+    }
+
+    // The segment p lies on (within `reach` steps), with the parameter along it, or -1.
+    std::pair<int, double> segmentAt(const IntPoint& p, double reach) const {
+        int best = -1;
+        double bestDistance = reach * reach, bestT = 0;
+        for (int s : buckets[bucketOf(p.X) * cellsPerSide + bucketOf(p.Y)]) {
+            auto [d, t] = segmentDistance(p, segments[s].a, segments[s].b);
+            if (d <= bestDistance) best = s, bestDistance = d, bestT = t;
+        }
+        return {best, bestT};
+    }
+
+    // The nearest polygon corner within `reach` steps, or (-1, -1).
+    std::pair<int, int> cornerNear(const IntPoint& p, cInt reach) const {
+        std::pair<int, int> best{-1, -1};
+        double bestDistance = std::numeric_limits<double>::max();
+        for (int s : buckets[bucketOf(p.X) * cellsPerSide + bucketOf(p.Y)]) {
+            for (const IntPoint* q : {&segments[s].a, &segments[s].b}) {
+                const cInt dx = q->X - p.X, dy = q->Y - p.Y;
+                if (std::abs(dx) > reach || std::abs(dy) > reach) continue;
+                const double d = double(dx) * double(dx) + double(dy) * double(dy);
+                if (d < bestDistance) {
+                    bestDistance = d;
+                    best = corners.at(keyOf(q->X, q->Y));
+                }
+            }
+        }
+        return best;
+    }
+};
+
+std::vector<std::vector<IntPoint>> integerLoops(const std::vector<BoundaryLoop>& loops,
+                                                const std::function<IntPoint(const BoundaryPoint&)>& at) {
+    std::vector<std::vector<IntPoint>> out;
+    for (const auto& loop : loops) {
+        std::vector<IntPoint> path;
+        for (const auto& p : loop.points) path.push_back(at(p));
+        out.push_back(std::move(path));
+    }
+    return out;
+}
+
+}  // namespace
+
+FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
+                                 ErrorMode mode)
+    : face_(face), budget_(budget), mode_(mode), patches_(face.surface) {}
+
+FaceTessellator::~FaceTessellator() = default;
+
+void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
+    double u0 = std::numeric_limits<double>::max(), v0 = u0;
+    double u1 = -u0, v1 = -u0;
+    for (const auto& loop : loops)
+        for (const auto& p : loop.points) {
+            if (!p.uv.allFinite())
+                throw std::runtime_error("a trimming curve evaluates to a non-finite point");
+            u0 = std::min(u0, p.uv.x()), u1 = std::max(u1, p.uv.x());
+            v0 = std::min(v0, p.uv.y()), v1 = std::max(v1, p.uv.y());
+        }
+    const double scaleOfDomain =
+        std::max({std::abs(u0), std::abs(u1), std::abs(v0), std::abs(v1), 1e-300});
+    if (!(u1 - u0 > 1e-12 * scaleOfDomain) || !(v1 - v0 > 1e-12 * scaleOfDomain))
+        throw std::runtime_error("the trimming loops enclose no area (degenerate face)");
+    frame_ = std::make_unique<Frame>();
+    frame_->u0 = u0;
+    frame_->v0 = v0;
+    frame_->scaleU = static_cast<double>(kScale) / (u1 - u0);
+    frame_->scaleV = static_cast<double>(kScale) / (v1 - v0);
+    for (double b : patches_.breakpointsU()) {
+        const cInt x = frame_->toInteger({b, v0}).X;
+        if (x > 0 && x < kScale) frame_->breaksX.push_back(x);
+    }
+    for (double b : patches_.breakpointsV()) {
+        const cInt y = frame_->toInteger({u0, b}).Y;
+        if (y > 0 && y < kScale) frame_->breaksY.push_back(y);
+    }
+}
+
+Paths FaceTessellator::regionOf(const std::vector<BoundaryLoop>& loops) const {
+    // The union by the even-odd rule is the repair of section 5.1: loops that cross themselves
+    // or each other become simple polygons, outer ones counter-clockwise, holes clockwise.
+    ClipperLib::Clipper clipper;
+    clipper.PreserveCollinear(true);
+    for (const auto& loop : integerLoops(loops, [&](const BoundaryPoint& p) {
+             return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+         }))
+        if (loop.size() >= 3) clipper.AddPath(loop, ClipperLib::ptSubject, true);
+    Paths region;
+    clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+    return region;
+}
+
+void FaceTessellator::buildKdTree(const Paths& region) {
+    leaves_.clear();
+    struct Node {
+        Rect rect;
+        bool full;
+        Paths region;
+        int depth;
+        int index;  // in leaves_
+    };
+    std::vector<Node> stack;
+    leaves_.push_back({{0, 0, kScale, kScale}});
+    stack.push_back({{0, 0, kScale, kScale}, false, region, 0, 0});
+    const auto& breaksU = patches_.breakpointsU();
+    const auto& breaksV = patches_.breakpointsV();
+    while (!stack.empty()) {
+        Node node = std::move(stack.back());
+        stack.pop_back();
+        const Rect& r = node.rect;
+        if (!node.full) {
+            if (coversWithMargin(node.region, r)) {
+                node.full = true;
+                node.region.clear();
+            } else {
+                node.region = clip(node.region, r, true);
+                bool any = false;
+                for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
+                if (!any) continue;  // outside the trimmed region: neither leaf nor parent
+            }
+        }
+        leaves_[node.index].full = node.full;
+        auto split = [&](int direction, cInt at) {
+            Rect a = r, b = r;
+            if (direction == 0)
+                a.x1 = b.x0 = at;
+            else
+                a.y1 = b.y0 = at;
+            const int ia = static_cast<int>(leaves_.size());
+            leaves_.push_back({a});
+            leaves_.push_back({b});
+            leaves_[node.index].children[0] = ia;
+            leaves_[node.index].children[1] = ia + 1;
+            stack.push_back({b, node.full, node.full ? Paths{} : node.region, node.depth + 1, ia + 1});
+            stack.push_back({a, node.full, std::move(node.region), node.depth + 1, ia});
+        };
+        // first cut at Bezier span borders, nearest the middle, in the direction with more
+        auto inside = [](const std::vector<cInt>& breaks, cInt lo, cInt hi) {
+            std::vector<cInt> out;
+            for (cInt b : breaks)
+                if (b > lo && b < hi) out.push_back(b);
+            return out;
+        };
+        const auto spanBreaksX = inside(frame_->breaksX, r.x0, r.x1);
+        const auto spanBreaksY = inside(frame_->breaksY, r.y0, r.y1);
+        if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
+            const bool alongU = spanBreaksX.size() >= spanBreaksY.size();
+            const auto& breaks = alongU ? spanBreaksX : spanBreaksY;
+            const cInt middle = alongU ? (r.x0 + r.x1) / 2 : (r.y0 + r.y1) / 2;
+            cInt best = breaks.front();
+            for (cInt b : breaks)
+                if (std::abs(b - middle) < std::abs(best - middle)) best = b;
+            split(alongU ? 0 : 1, best);
+            continue;
+        }
+        // one Bezier patch: bound the error of its piece over the cell (section 5.2)
+        const Point2 low = frame_->toParameter(r.x0, r.y0), high = frame_->toParameter(r.x1, r.y1);
+        const Point2 middle = 0.5 * (low + high);
+        const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
+        auto local = [](double t, double a, double b) { return std::clamp((t - a) / (b - a), 0.0, 1.0); };
+        const BezierPatch piece = patches_.patch(su, sv).restricted(
+            local(low.x(), breaksU[su], breaksU[su + 1]), local(high.x(), breaksU[su], breaksU[su + 1]),
+            local(low.y(), breaksV[sv], breaksV[sv + 1]), local(high.y(), breaksV[sv], breaksV[sv + 1]));
+        const CellErrorBound bound = cellErrorBound(piece, mode_);
+        const double error = mode_ == ErrorMode::Approximate
+                                 ? bound.interior + bound.twist
+                                 : (node.full ? bound.untrimmed() : bound.trimmed());
+        if (error <= budget_.surface) {
+            leaves_[node.index].leaf = true;
+            continue;
+        }
+        const bool canU = r.x1 - r.x0 >= 2, canV = r.y1 - r.y0 >= 2;
+        if (node.depth >= kMaxDepth || (!canU && !canV)) {
+            toleranceReached_ = false;
+            leaves_[node.index].leaf = true;
+            continue;
+        }
+        int direction = bound.splitDirection;
+        if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
+        const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
+        const cInt at = std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
+        split(direction, at);
+    }
+}
+
+namespace {
+
+// Cell corners by the line they lie on, to put a neighbour's corners (hanging points) into
+// the sides of a bigger cell so that neighbouring cells share every point of a common side.
+struct CornerLines {
+    std::map<cInt, std::vector<cInt>> onVertical;    // x -> sorted y
+    std::map<cInt, std::vector<cInt>> onHorizontal;  // y -> sorted x
+
+    void finish() {
+        for (auto* lines : {&onVertical, &onHorizontal})
+            for (auto& [line, points] : *lines) {
+                std::sort(points.begin(), points.end());
+                points.erase(std::unique(points.begin(), points.end()), points.end());
+            }
+    }
+    bool isCorner(const IntPoint& p) const {
+        auto it = onVertical.find(p.X);
+        return it != onVertical.end() && std::binary_search(it->second.begin(), it->second.end(), p.Y);
+    }
+    // Points strictly between a and b on a common vertical or horizontal line, in order a -> b.
+    void between(const IntPoint& a, const IntPoint& b, Path& out) const {
+        if (a.X == b.X) {
+            auto it = onVertical.find(a.X);
+            if (it == onVertical.end()) return;
+            const auto& ys = it->second;
+            if (a.Y < b.Y) {
+                for (auto y = std::upper_bound(ys.begin(), ys.end(), a.Y); y != ys.end() && *y < b.Y; ++y)
+                    out.push_back({a.X, *y});
+            } else {
+                auto y = std::lower_bound(ys.begin(), ys.end(), a.Y);
+                while (y != ys.begin()) {
+                    --y;
+                    if (*y <= b.Y) break;
+                    out.push_back({a.X, *y});
+                }
+            }
+        } else if (a.Y == b.Y) {
+            auto it = onHorizontal.find(a.Y);
+            if (it == onHorizontal.end()) return;
+            const auto& xs = it->second;
+            if (a.X < b.X) {
+                for (auto x = std::upper_bound(xs.begin(), xs.end(), a.X); x != xs.end() && *x < b.X; ++x)
+                    out.push_back({*x, a.Y});
+            } else {
+                auto x = std::lower_bound(xs.begin(), xs.end(), a.X);
+                while (x != xs.begin()) {
+                    --x;
+                    if (*x <= b.X) break;
+                    out.push_back({*x, a.Y});
+                }
+            }
+        }
+    }
+    // Adds the hanging points to the sides of a path that run along the cell's border.
+    Path withHangingPoints(const Path& path, const Rect& r) const {
+        Path out;
+        for (size_t i = 0; i < path.size(); ++i) {
+            const IntPoint& a = path[i];
+            const IntPoint& b = path[(i + 1) % path.size()];
+            out.push_back(a);
+            const bool vertical = a.X == b.X && (a.X == r.x0 || a.X == r.x1);
+            const bool horizontal = a.Y == b.Y && (a.Y == r.y0 || a.Y == r.y1);
+            if (vertical || horizontal) between(a, b, out);
+        }
+        return out;
+    }
+};
+
+// The polygons with holes of a leaf: each entry is rings[0] = outer, rings[1..] = holes.
+std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full, const CornerLines& lines) {
+    std::vector<Paths> out;
+    if (full) {
+        out.push_back({lines.withHangingPoints(r.path(), r)});
+        return out;
+    }
+    ClipperLib::Clipper clipper;
+    clipper.PreserveCollinear(true);
+    clipper.AddPaths(region, ClipperLib::ptSubject, true);
+    clipper.AddPath(r.path(), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    std::vector<const ClipperLib::PolyNode*> outers;
+    for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext())
+        if (!node->IsHole()) outers.push_back(node);
+    for (const auto* outer : outers) {
+        Paths rings{lines.withHangingPoints(outer->Contour, r)};
+        for (const auto* hole : outer->Childs) rings.push_back(lines.withHangingPoints(hole->Contour, r));
+        out.push_back(std::move(rings));
+    }
+    return out;
+}
+
+}  // namespace
+
+void FaceTessellator::forEachLeaf(const ClipperLib::Paths& region,
+                                  const std::function<void(const Leaf&, const Paths&)>& visit) const {
+    // The region cut down the tree node by node: each cut sees only its parent's piece, so the
+    // whole walk costs about the boundary's size times the tree's depth.
+    std::vector<std::pair<int, Paths>> stack;
+    stack.push_back({0, region});
+    while (!stack.empty()) {
+        auto [index, parentRegion] = std::move(stack.back());
+        stack.pop_back();
+        const Leaf& node = leaves_[index];
+        Paths piece;
+        if (!node.full) piece = clip(parentRegion, node.rect, true);
+        if (node.leaf) {
+            visit(node, piece);
+        } else if (node.children[0] >= 0) {
+            stack.push_back({node.children[1], piece});
+            stack.push_back({node.children[0], std::move(piece)});
+        }
+    }
+}
+
+// Points that must stay in a cell's sides: the corners of all leaves (a neighbour's corners
+// are hanging points of a bigger cell), and the boundary's own points, which the clipper drops
+// where the boundary runs along a cell side.
+namespace {
+CornerLines cornerLinesOf(const std::vector<Rect>& cells,
+                          const std::vector<std::vector<IntPoint>>& loopPoints) {
+    CornerLines lines;
+    for (const auto& cell : cells)
+            for (const IntPoint& c : cell.path()) {
+                lines.onVertical[c.X].push_back(c.Y);
+                lines.onHorizontal[c.Y].push_back(c.X);
+            }
+    for (const auto& loop : loopPoints)
+        for (const IntPoint& p : loop) {
+            lines.onVertical[p.X].push_back(p.Y);
+            lines.onHorizontal[p.Y].push_back(p.X);
+        }
+    lines.finish();
+    return lines;
+}
+}  // namespace
+
+std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<BoundaryLoop>& loops) {
+    if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
+    setFrame(loops);
+    const Paths region = regionOf(loops);
+    double area = 0;
+    for (const auto& p : region) area += ClipperLib::Area(p);
+    if (!(std::abs(area) > 0)) throw std::runtime_error("the trimming loops enclose no area");
+    buildKdTree(region);
+
+
+    const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
+        return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+    });
+    std::vector<Rect> cells;
+    for (const auto& leaf : leaves_)
+        if (leaf.leaf) cells.push_back(leaf.rect);
+    const CornerLines lines = cornerLinesOf(cells, loopPoints);
+    BoundaryIndex index;
+    index.build(loopPoints);
+
+    std::vector<BoundaryCrossing> crossings;
+    std::unordered_map<std::int64_t, bool> seen;
+    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
+        if (leaf.full) return;
+        for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, false, lines))
+            for (const Path& ring : rings)
+                for (const IntPoint& p : ring) {
+                    const auto key = keyOf(p.X, p.Y);
+                    if (index.corners.count(key) || seen.count(key)) continue;
+                    seen[key] = true;
+                    auto [segment, t] = index.segmentAt(p, 1.5);
+                    if (segment < 0) continue;  // a surface point inside the region
+                    const auto& s = index.segments[segment];
+                    const BoundarySegmentOrigin& origin = loops[s.loop].origins[s.index];
+                    if (origin.edge < 0) continue;
+                    // t runs along the loop; the edge may run the other way
+                    crossings.push_back({origin.edge, origin.segment, origin.forward ? t : 1 - t, p.X, p.Y});
+                }
+    });
+    return crossings;
+}
+
+FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
+                                      const std::vector<Point3>& sharedPositions) {
+    FaceMesh mesh;
+    const Paths region = regionOf(loops);
+    if (std::getenv("NURBSLOD_DEBUG")) {
+        std::fprintf(stderr, "face %d loops", face_.faceIndex);
+        for (const auto& l : loops) std::fprintf(stderr, " %zu", l.points.size());
+        for (const auto& l : loops) {
+            std::set<std::int64_t> distinct;
+            std::set<std::uint32_t> ids;
+            for (const auto& p : l.points) {
+                const auto q = p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+                distinct.insert(keyOf(q.X, q.Y));
+                ids.insert(p.vertex);
+            }
+            std::fprintf(stderr, " (distinct points %zu ids %zu)", distinct.size(), ids.size());
+        }
+        std::fprintf(stderr, " region");
+        for (const auto& p : region) std::fprintf(stderr, " %zu", p.size());
+        std::fprintf(stderr, "\n");
+    }
+
+    const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
+        return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+    });
+    std::vector<Rect> cells;
+    for (const auto& leaf : leaves_)
+        if (leaf.leaf) cells.push_back(leaf.rect);
+    const CornerLines lines = cornerLinesOf(cells, loopPoints);
+    BoundaryIndex index;
+    index.build(loopPoints);
+
+    // face vertices: shared ones by shared id, the face's own by integer point
+    std::unordered_map<std::uint32_t, std::uint32_t> sharedToFace;
+    std::unordered_map<std::int64_t, std::uint32_t> pointToFace;
+    std::vector<Point2> uvOfVertex;
+    std::vector<char> needsPosition;
+    auto sharedVertex = [&](std::uint32_t id, const Point2& uv) {
+        auto [it, inserted] = sharedToFace.emplace(id, static_cast<std::uint32_t>(mesh.vertices.size()));
+        if (inserted) {
+            FaceMesh::Vertex v;
+            v.shared = true;
+            v.sharedId = id;
+            v.position = sharedPositions[id];
+            mesh.vertices.push_back(v);
+            uvOfVertex.push_back(uv);
+            needsPosition.push_back(0);
+        }
+        return it->second;
+    };
+    auto ownVertex = [&](const IntPoint& p, const Point2& uv, const Point3* position) {
+        auto [it, inserted] = pointToFace.emplace(keyOf(p.X, p.Y), static_cast<std::uint32_t>(mesh.vertices.size()));
+        if (inserted) {
+            FaceMesh::Vertex v;
+            if (position) v.position = *position;
+            mesh.vertices.push_back(v);
+            uvOfVertex.push_back(uv);
+            needsPosition.push_back(position ? 0 : 1);
+        }
+        return it->second;
+    };
+    auto resolve = [&](const IntPoint& p) -> std::uint32_t {
+        const auto key = keyOf(p.X, p.Y);
+        if (auto it = index.corners.find(key); it != index.corners.end()) {
+            const auto& bp = loops[it->second.first].points[it->second.second];
+            return sharedVertex(bp.vertex, bp.uv);
+        }
+        if (lines.isCorner(p) && index.segmentAt(p, 0.5).first < 0)
+            return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);
+        if (auto [loop, i] = index.cornerNear(p, 3); loop >= 0) {
+            const auto& bp = loops[loop].points[i];
+            return sharedVertex(bp.vertex, bp.uv);
+        }
+        if (auto [segment, t] = index.segmentAt(p, 1.5); segment >= 0) {
+            // a cut no other face knows: a point on this face's chord (an open edge)
+            const auto& s = index.segments[segment];
+            const auto& loop = loops[s.loop];
+            const auto& a = loop.points[s.index];
+            const auto& b = loop.points[(s.index + 1) % loop.points.size()];
+            const Point3 position = (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
+            ++mesh.unmatchedCrossings;
+            return ownVertex(p, (1 - t) * a.uv + t * b.uv, &position);
+        }
+        return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);
+    };
+
+    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
+        ++mesh.cells;
+        for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines)) {
+            std::vector<std::uint32_t> ids;
+            std::vector<std::vector<IntegerPoint2>> integerRings;
+            for (const Path& ring : rings) {
+                std::vector<IntegerPoint2> integerRing;
+                for (const IntPoint& p : ring) {
+                    integerRing.push_back({p.X, p.Y});
+                    ids.push_back(resolve(p));
+                }
+                integerRings.push_back(std::move(integerRing));
+            }
+            if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
+                // a whole cell without neighbours' points: its two triangles (section 7)
+                mesh.triangles.push_back({ids[0], ids[1], ids[2]});
+                mesh.triangles.push_back({ids[0], ids[2], ids[3]});
+                continue;
+            }
+            const Triangulation triangulation = triangulatePolygon(integerRings);
+            if (std::getenv("NURBSLOD_DEBUG") && (!triangulation.complete || integerRings.size() > 1)) {
+                std::fprintf(stderr, "face %d leaf rings", face_.faceIndex);
+                for (const auto& ring : integerRings) std::fprintf(stderr, " %zu", ring.size());
+                std::fprintf(stderr, " -> %zu triangles complete %d\n", triangulation.triangles.size(),
+                             int(triangulation.complete));
+            }
+            for (const auto& t : triangulation.triangles) {
+                const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
+                // points the boundary shares (a pole, a snapped cut) make zero-area triangles
+                if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+                mesh.triangles.push_back(tri);
+            }
+        }
+    });
+
+    if (std::getenv("NURBSLOD_DEBUG")) {
+        std::set<std::uint32_t> used;
+        for (const auto& t : mesh.triangles)
+            for (auto i : t) used.insert(i);
+        std::size_t unused = 0, exactUnused = 0;
+        for (const auto& l : loops)
+            for (const auto& p : l.points) {
+                auto it = sharedToFace.find(p.vertex);
+                if (it == sharedToFace.end() || !used.count(it->second)) {
+                    ++unused;
+                    exactUnused += p.exact;
+                }
+            }
+        std::fprintf(stderr, "face %d boundary points unused %zu (exact %zu)\n", face_.faceIndex, unused, exactUnused);
+    }
+    // positions and exact normals at every vertex (section 8)
+    const auto& surface = face_.surface;
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const Point2& uv = uvOfVertex[i];
+        if (needsPosition[i]) mesh.vertices[i].position = surface.point(uv.x(), uv.y());
+        Vector3 normal = surface.normal(uv.x(), uv.y());
+        mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
+    }
+    if (face_.reversed)
+        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+    mesh.toleranceReached = toleranceReached_;
+    return mesh;
+}
+
+}  // namespace nurbslod

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <polyclipping/clipper.hpp>
+#include <vector>
+
+#include "geometry/BezierPatchGrid.hpp"
+#include "tessellate/ErrorBudget.hpp"
+#include "tessellate/FaceBoundary.hpp"
+#include "tessellate/FaceMesh.hpp"
+#include "trim/TrimmedSurface.hpp"
+
+namespace nurbslod {
+
+// Tessellates one trimmed face (paper sections 5.2 to 8): a kd-tree over the bounding box of
+// the trimming polygon, each leaf cut by the trimmed region and triangulated.
+//
+// The (u, v) plane is mapped to integers (2^30 steps across the boundary's bounding box) so
+// that the cutting (Clipper) is exact and every cell corner and split line is one integer.
+//
+// Two passes keep the mesh closed across edges: findCrossings() builds the kd-tree and returns
+// the points where cell sides cut the boundary between its corners; once every face's
+// crossings are added to the shared edge polylines (so both faces of an edge have them),
+// triangulate() cuts and triangulates the leaves with the completed boundary.
+class FaceTessellator {
+public:
+    FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode);
+    ~FaceTessellator();
+
+    // Throws std::runtime_error with the reason when the face cannot be tessellated.
+    std::vector<BoundaryCrossing> findCrossings(const std::vector<BoundaryLoop>& loops);
+    FaceMesh triangulate(const std::vector<BoundaryLoop>& loops,
+                         const std::vector<Point3>& sharedPositions);
+
+private:
+    struct Leaf;
+    struct Frame;
+    void setFrame(const std::vector<BoundaryLoop>& loops);
+    ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
+    void buildKdTree(const ClipperLib::Paths& region);
+    void forEachLeaf(const ClipperLib::Paths& region,
+                     const std::function<void(const Leaf&, const ClipperLib::Paths&)>& visit) const;
+
+    const TrimmedSurface& face_;
+    ErrorBudget budget_;
+    ErrorMode mode_;
+    BezierPatchGrid patches_;
+    std::unique_ptr<Frame> frame_;
+    std::vector<Leaf> leaves_;
+    bool toleranceReached_ = true;
+};
+
+}  // namespace nurbslod

@@ -1,0 +1,91 @@
+#include "trim/CurveOnSurface.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <array>
+#include <mutex>
+
+namespace nurbslod {
+
+namespace {
+
+// Highest degree used for the 3D Bezier pieces: the paper caps it (e.g. 20) because the SVD
+// grows with the degree; pieces of higher true degree are subdivided instead.
+constexpr int kMaxChordDegree = 9;
+
+double binomial(int n, int k) {
+    double r = 1;
+    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+    return r;
+}
+
+// Pseudo-inverse of the Bernstein collocation matrix at t_i = i/n (paper section 4: "a linear
+// system of equations with a nonsingular matrix", solved by SVD for stability). It depends only
+// on the degree, so it is computed once per degree.
+const Eigen::MatrixXd& interpolationMatrix(int n) {
+    static std::array<Eigen::MatrixXd, kMaxChordDegree + 1> matrices;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        for (int degree = 1; degree <= kMaxChordDegree; ++degree) {
+            Eigen::MatrixXd B(degree + 1, degree + 1);
+            for (int i = 0; i <= degree; ++i) {
+                const double t = static_cast<double>(i) / degree;
+                for (int j = 0; j <= degree; ++j)
+                    B(i, j) = binomial(degree, j) * std::pow(t, j) * std::pow(1 - t, degree - j);
+            }
+            Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeFullU | Eigen::ComputeFullV);
+            Eigen::VectorXd inverse = svd.singularValues();
+            for (int k = 0; k < inverse.size(); ++k) inverse[k] = 1.0 / inverse[k];
+            matrices[degree] = svd.matrixV() * inverse.asDiagonal() * svd.matrixU().transpose();
+        }
+    });
+    return matrices[n];
+}
+
+double distanceToSegment(const Point3& p, const Point3& a, const Point3& b) {
+    const Vector3 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    double lambda = length2 > 0 ? (p - a).dot(ab) / length2 : 0.0;
+    lambda = std::clamp(lambda, 0.0, 1.0);
+    return (p - (a + lambda * ab)).norm();
+}
+
+Point3 bezierPoint(const std::vector<Point3>& control, double t) {
+    std::vector<Point3> work = control;
+    const int n = static_cast<int>(work.size()) - 1;
+    for (int level = 1; level <= n; ++level)
+        for (int i = 0; i <= n - level; ++i) work[i] = (1 - t) * work[i] + t * work[i + 1];
+    return work[0];
+}
+
+}  // namespace
+
+ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
+    const int n = std::clamp(curve.bezierDegree(), 1, kMaxChordDegree);
+    const Eigen::MatrixXd& inverse = interpolationMatrix(n);
+    Eigen::MatrixXd samples(n + 1, 3);
+    for (int i = 0; i <= n; ++i) {
+        const Point3 p = curve.point(s0 + (s1 - s0) * i / n);
+        samples.row(i) = p.transpose();
+    }
+    const Eigen::MatrixXd controlMatrix = inverse * samples;
+    std::vector<Point3> control(n + 1);
+    for (int i = 0; i <= n; ++i) control[i] = controlMatrix.row(i).transpose();
+    // the interpolant passes through the samples, so the end points are exact
+    control.front() = samples.row(0).transpose();
+    control.back() = samples.row(n).transpose();
+
+    ChordBound result;
+    for (int i = 0; i < n; ++i) {
+        const double t = (i + 0.5) / n;
+        const Point3 exact = curve.point(s0 + (s1 - s0) * t);
+        result.residual = std::max(result.residual, (exact - bezierPoint(control, t)).norm());
+    }
+    double hull = 0;
+    for (int i = 1; i < n; ++i)
+        hull = std::max(hull, distanceToSegment(control[i], control.front(), control.back()));
+    result.bound = hull + result.residual;
+    return result;
+}
+
+}  // namespace nurbslod

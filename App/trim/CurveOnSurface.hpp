@@ -1,0 +1,47 @@
+#pragma once
+
+#include "geometry/BSplineCurve2d.hpp"
+#include "geometry/BSplineSurface.hpp"
+
+namespace nurbslod {
+
+// The 3D curve S(c(t)) traced on a surface by a trimming curve c, over the trimming curve's
+// parameter range [first, last] reached through a normalised parameter s in [0, 1].
+class CurveOnSurface {
+public:
+    CurveOnSurface(const BSplineSurface& surface, const BSplineCurve2d& pcurve, double first,
+                   double last)
+        : surface_(&surface), pcurve_(&pcurve), first_(first), last_(last) {}
+
+    double parameter(double s) const { return first_ + s * (last_ - first_); }
+    Point2 uv(double s) const { return pcurve_->point(parameter(s)); }
+    Point3 point(double s) const {
+        const Point2 p = uv(s);
+        return surface_->point(p.x(), p.y());
+    }
+    // The degree of the 3D Bezier pieces of this curve (paper section 4: d_2d (d_u + d_v)).
+    int bezierDegree() const {
+        return pcurve_->degree() * (surface_->degreeU() + surface_->degreeV());
+    }
+    const BSplineSurface& surface() const { return *surface_; }
+
+private:
+    const BSplineSurface* surface_;
+    const BSplineCurve2d* pcurve_;
+    double first_, last_;
+};
+
+// An upper bound of the distance between the curve's piece over [s0, s1] and the chord between
+// its end points (paper section 5.1). The piece is elevated to a 3D Bezier curve by
+// interpolation at equally spaced parameters (paper section 4, solved by SVD); by the convex
+// hull property the piece lies within the largest distance of a control point from the chord.
+// Where the piece is not a polynomial of the chosen degree (rational surfaces, knots inside
+// the piece, degree capped for speed) the interpolation residual, measured at the midpoints,
+// is added and reported so the caller can subdivide until it is negligible.
+struct ChordBound {
+    double bound = 0;     // control-net distance to the chord + residual
+    double residual = 0;  // interpolation residual at the sample midpoints
+};
+ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1);
+
+}  // namespace nurbslod

@@ -1,0 +1,87 @@
+#include "trim/EdgeDiscretizer.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace nurbslod {
+
+namespace {
+
+// Deep enough for any real edge (2^-30 of its length), shallow enough to stop on a broken one.
+constexpr int kMaxDepth = 30;
+
+bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, double eps) {
+    for (const auto& use : uses) {
+        const ChordBound b = chordBound(use, s0, s1);
+        // a large residual means the interpolant does not yet represent the piece: its hull
+        // bound would not be trustworthy, so subdivide
+        if (b.bound > eps || b.residual > 0.25 * eps) return false;
+    }
+    return true;
+}
+
+double distanceToSegment(const Point3& p, const Point3& a, const Point3& b) {
+    const Vector3 ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double lambda = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (p - (a + lambda * ab)).norm();
+}
+
+}  // namespace
+
+std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
+                                   double simplification) {
+    std::vector<double> params{0.0};
+    // depth-first over [s0, s1] so that the parameters come out in increasing order
+    std::vector<std::pair<std::pair<double, double>, int>> stack{{{0.0, 1.0}, 0}};
+    while (!stack.empty()) {
+        auto [interval, depth] = stack.back();
+        stack.pop_back();
+        auto [s0, s1] = interval;
+        if (depth < kMaxDepth && !flatEnough(uses, s0, s1, approximation)) {
+            const double mid = 0.5 * (s0 + s1);
+            stack.push_back({{mid, s1}, depth + 1});
+            stack.push_back({{s0, mid}, depth + 1});
+            continue;
+        }
+        params.push_back(s1);
+    }
+    if (params.size() <= 2 || simplification <= 0) return params;
+
+    // Douglas-Peucker on the 3D polylines of all uses at once: a point goes only if every
+    // face's polyline stays within `simplification` of the simplified one.
+    std::vector<std::vector<Point3>> points(uses.size());
+    for (size_t k = 0; k < uses.size(); ++k)
+        for (double s : params) points[k].push_back(uses[k].point(s));
+    std::vector<char> keep(params.size(), 0);
+    keep.front() = keep.back() = 1;
+    std::vector<std::pair<size_t, size_t>> ranges{{0, params.size() - 1}};
+    while (!ranges.empty()) {
+        auto [a, b] = ranges.back();
+        ranges.pop_back();
+        if (b <= a + 1) continue;
+        double worst = -1;
+        size_t worstIndex = a + 1;
+        for (size_t i = a + 1; i < b; ++i) {
+            double d = 0;
+            for (const auto& polyline : points)
+                d = std::max(d, distanceToSegment(polyline[i], polyline[a], polyline[b]));
+            if (d > worst) worst = d, worstIndex = i;
+        }
+        // a closed edge (start == end) has a zero chord; never collapse it below 3 points
+        bool closedChord = false;
+        for (const auto& polyline : points)
+            closedChord |= (polyline[a] - polyline[b]).norm() <= 1e-12;
+        if (worst > simplification || (closedChord && a == 0 && b == params.size() - 1)) {
+            keep[worstIndex] = 1;
+            ranges.push_back({a, worstIndex});
+            ranges.push_back({worstIndex, b});
+        }
+    }
+    std::vector<double> simplified;
+    for (size_t i = 0; i < params.size(); ++i)
+        if (keep[i]) simplified.push_back(params[i]);
+    return simplified;
+}
+
+}  // namespace nurbslod

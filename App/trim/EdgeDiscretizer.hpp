@@ -1,0 +1,17 @@
+#pragma once
+
+#include <vector>
+
+#include "trim/CurveOnSurface.hpp"
+
+namespace nurbslod {
+
+// Discretises one B-rep edge for all the faces that use it (its curves on their surfaces), in
+// the edge's normalised parameter s in [0, 1], so that every face's 3D curve stays within
+// `approximation` of its chords (midpoint subdivision under the chord bound, paper section 5.1)
+// and then the polyline is simplified with a Hausdorff distance of `simplification` (the
+// paper's (1 - gamma) share). Returns the increasing parameters, 0 and 1 included.
+std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
+                                   double simplification);
+
+}  // namespace nurbslod
