@@ -1,5 +1,7 @@
 #include "geometry/BSplineCurve2d.hpp"
 
+#include <algorithm>
+
 #include "geometry/BasisFunctions.hpp"
 
 namespace nurbslod {
@@ -8,6 +10,7 @@ BSplineCurve2d::BSplineCurve2d(KnotVector knots, std::vector<HomogeneousPoint2> 
     : knots_(std::move(knots)), poles_(std::move(weightedPoles)) {}
 
 Point2 BSplineCurve2d::point(double t) const {
+    t = std::clamp(t, knots_.first(), knots_.last());
     const int p = knots_.degree();
     const int span = knots_.findSpan(t);
     double N[kMaxDegree + 1];
@@ -18,6 +21,7 @@ Point2 BSplineCurve2d::point(double t) const {
 }
 
 std::pair<Point2, Point2> BSplineCurve2d::pointAndDerivative(double t) const {
+    t = std::clamp(t, knots_.first(), knots_.last());
     const int p = knots_.degree();
     const int span = knots_.findSpan(t);
     double N[kMaxDegree + 1], dN[kMaxDegree + 1];

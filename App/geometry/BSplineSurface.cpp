@@ -1,5 +1,6 @@
 #include "geometry/BSplineSurface.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/BasisFunctions.hpp"
@@ -14,6 +15,13 @@ BSplineSurface::BSplineSurface(KnotVector u, KnotVector v, int countU, int count
       countV_(countV),
       poles_(std::move(weightedPoles)) {}
 
+void BSplineSurface::clampToDomain(double& u, double& v) const {
+    // Trimming curves of real files stray outside the domain by their tolerance; a polynomial
+    // continued past a short end span would fly off, so they meet the border instead.
+    u = std::clamp(u, u_.first(), u_.last());
+    v = std::clamp(v, v_.first(), v_.last());
+}
+
 bool BSplineSurface::isRational() const {
     if (poles_.empty()) return false;
     const double w0 = poles_.front()[3];
@@ -23,6 +31,7 @@ bool BSplineSurface::isRational() const {
 }
 
 HomogeneousPoint3 BSplineSurface::homogeneousPoint(double u, double v) const {
+    clampToDomain(u, v);
     const int pu = u_.degree(), pv = v_.degree();
     const int su = u_.findSpan(u), sv = v_.findSpan(v);
     double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
@@ -43,6 +52,7 @@ Point3 BSplineSurface::point(double u, double v) const {
 }
 
 BSplineSurface::FirstDerivatives BSplineSurface::derivatives(double u, double v) const {
+    clampToDomain(u, v);
     const int pu = u_.degree(), pv = v_.degree();
     const int su = u_.findSpan(u), sv = v_.findSpan(v);
     double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];

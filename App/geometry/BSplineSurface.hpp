@@ -45,6 +45,7 @@ public:
     std::optional<std::string> problem() const;
 
 private:
+    void clampToDomain(double& u, double& v) const;
     HomogeneousPoint3 homogeneousPoint(double u, double v) const;
 
     KnotVector u_, v_;

@@ -31,8 +31,10 @@ namespace nurbslod::occ {
 
 namespace {
 
-BSplineSurface toSurface(const Handle(Geom_BSplineSurface) & s) {
-    std::vector<double> knotsU(s->NbUKnots() ? 0 : 0), knotsV;
+}  // namespace
+
+BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & s) {
+    std::vector<double> knotsU, knotsV;
     TColStd_Array1OfReal ku(1, s->NbUPoles() + s->UDegree() + 1);
     TColStd_Array1OfReal kv(1, s->NbVPoles() + s->VDegree() + 1);
     s->UKnotSequence(ku);
@@ -50,6 +52,8 @@ BSplineSurface toSurface(const Handle(Geom_BSplineSurface) & s) {
     return BSplineSurface(KnotVector(s->UDegree(), std::move(knotsU)),
                           KnotVector(s->VDegree(), std::move(knotsV)), nu, nv, std::move(poles));
 }
+
+namespace {
 
 BSplineCurve2d toCurve(const Handle(Geom2d_BSplineCurve) & c) {
     std::vector<double> knots;
@@ -91,7 +95,9 @@ Handle(Geom2d_BSplineCurve) pcurveAsBSpline(const Handle(Geom2d_Curve) & curve, 
     return result;
 }
 
-Handle(Geom_BSplineSurface) surfaceAsBSpline(const TopoDS_Face& face) {
+}  // namespace
+
+Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
     TopLoc_Location location;
     Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
     if (surface.IsNull()) throw Standard_Failure("the face has no surface");
@@ -114,6 +120,8 @@ Handle(Geom_BSplineSurface) surfaceAsBSpline(const TopoDS_Face& face) {
     if (!location.IsIdentity()) bspline->Transform(location.Transformation());
     return bspline;
 }
+
+namespace {
 
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                     const TopTools_IndexedMapOfShape& edges) {
@@ -152,7 +160,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
-    result.surface = toSurface(surfaceAsBSpline(face));
+    result.surface = toBSplineSurface(faceSurfaceAsBSpline(face));
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
         const TopoDS_Wire wire = TopoDS::Wire(it.Current());

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include "tessellate/Model.hpp"
@@ -11,5 +13,11 @@ namespace nurbslod::occ {
 // location applied to the control points, loops from the edges' pcurves. A face that cannot
 // be converted keeps its slot with `error` set.
 Model importModel(const TopoDS_Shape& shape);
+
+// The NURBS form of a face's surface as the importer sees it (analytic surfaces converted,
+// periodic knots clamped, the face's location applied), and its copy in our own type: the
+// pair lets tests compare our evaluation with OpenCASCADE's on the very same surface.
+Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face);
+BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & surface);
 
 }  // namespace nurbslod::occ

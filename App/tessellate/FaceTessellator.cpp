@@ -455,6 +455,61 @@ CornerLines cornerLinesOf(const std::vector<Rect>& cells,
 }
 }  // namespace
 
+namespace {
+
+// A cut point on an edge's chord is placed on the 3D chord (so that both faces of the edge
+// share it), while in the (u, v) plane the clipper's rounding moves it off the chord by a
+// fraction of a step. A triangle made of the chord's two ends and that point is then a needle:
+// valid in (u, v), of no area in space. Such a needle is removed and the triangle on the other
+// side of its long edge is split at the needle's middle point, which keeps every edge shared.
+void splitNeedles(FaceMesh& mesh) {
+    auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
+    auto isNeedle = [&](const std::array<std::uint32_t, 3>& t, int& longest) {
+        double longestLength = -1;
+        for (int k = 0; k < 3; ++k) {
+            const double l = (position(t[(k + 1) % 3]) - position(t[k])).squaredNorm();
+            if (l > longestLength) longestLength = l, longest = k;
+        }
+        const Vector3 n = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
+        return n.norm() <= 1e-9 * longestLength;
+    };
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> triangleOfEdge;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            triangleOfEdge[{mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3]}] = i;
+    std::vector<char> removed(mesh.triangles.size(), 0);
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        int longest = 0;
+        if (removed[i] || !isNeedle(mesh.triangles[i], longest)) continue;
+        const auto needle = mesh.triangles[i];
+        const std::uint32_t a = needle[longest], b = needle[(longest + 1) % 3];
+        const std::uint32_t c = needle[(longest + 2) % 3];
+        // the neighbour runs the long edge the other way: b -> a
+        auto it = triangleOfEdge.find({b, a});
+        if (it == triangleOfEdge.end() || removed[it->second]) continue;
+        const std::size_t j = it->second;
+        const auto other = mesh.triangles[j];
+        int at = 0;
+        while (!(other[at] == b && other[(at + 1) % 3] == a)) ++at;
+        const std::uint32_t d = other[(at + 2) % 3];
+        if (d == c) continue;
+        // (b, a, d) becomes (b, c, d) and (c, a, d); the needle goes
+        removed[i] = 1;
+        mesh.triangles[j] = {b, c, d};
+        mesh.triangles.push_back({c, a, d});
+        removed.push_back(0);
+        for (const std::size_t index : {j, mesh.triangles.size() - 1})
+            for (int k = 0; k < 3; ++k)
+                triangleOfEdge[{mesh.triangles[index][k], mesh.triangles[index][(k + 1) % 3]}] = index;
+    }
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+        if (!removed[i]) mesh.triangles[out++] = mesh.triangles[i];
+    mesh.triangles.resize(out);
+}
+
+}  // namespace
+
 std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<BoundaryLoop>& loops) {
     if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
     setFrame(loops);
@@ -638,9 +693,13 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     for (size_t i = 0; i < mesh.vertices.size(); ++i) {
         const Point2& uv = uvOfVertex[i];
         if (needsPosition[i]) mesh.vertices[i].position = surface.point(uv.x(), uv.y());
+        if (std::getenv("NURBSLOD_DEBUG") && mesh.vertices[i].position.norm() > 1e4)
+            std::fprintf(stderr, "face %d far vertex shared %d uv %.17g %.17g\n", face_.faceIndex,
+                         int(mesh.vertices[i].shared), uv.x(), uv.y());
         Vector3 normal = surface.normal(uv.x(), uv.y());
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
     }
+    if (!std::getenv("NO_SPLIT")) splitNeedles(mesh);
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
     mesh.toleranceReached = toleranceReached_;

@@ -13,6 +13,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceTessellator.hpp"
@@ -122,7 +123,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
     });
 
-    // 2. shared vertices: B-rep vertices first, then the inner points of every edge
+    // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
+    // Which B-rep vertex sits at which end of the edge's parameter range is read from the
+    // geometry: the importer's notion of first and last follows orientation flags that sloppy
+    // files do not always keep.
+    std::vector<std::pair<int, int>> endVertices(model.edges.size());
+    for (size_t e = 0; e < model.edges.size(); ++e) {
+        const ModelEdge& edge = model.edges[e];
+        endVertices[e] = {edge.firstVertex, edge.lastVertex};
+        if (uses[e].empty() || edge.firstVertex < 0 || edge.lastVertex < 0) continue;
+        const auto curve = curveOnSurface(uses[e].front());
+        const Point3 start = curve.point(0.0), end = curve.point(1.0);
+        const Point3& first = model.vertices[edge.firstVertex].point;
+        const Point3& last = model.vertices[edge.lastVertex].point;
+        if ((start - last).norm() + (end - first).norm() < (start - first).norm() + (end - last).norm())
+            std::swap(endVertices[e].first, endVertices[e].second);
+    }
     std::vector<Point3> positions;
     std::map<std::pair<int, int>, std::uint32_t> vertexOfBrepVertex;  // (vertex, face or -1)
     {
@@ -130,13 +146,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::map<int, std::vector<std::pair<int, Point3>>> endpoints;
         for (size_t e = 0; e < model.edges.size(); ++e) {
             if (uses[e].empty()) continue;
-            const ModelEdge& edge = model.edges[e];
+            const auto [firstVertex, lastVertex] = endVertices[e];
             for (size_t k = 0; k < uses[e].size(); ++k) {
                 const auto curve = curveOnSurface(uses[e][k]);
-                if (edge.firstVertex >= 0)
-                    endpoints[edge.firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
-                if (edge.lastVertex >= 0)
-                    endpoints[edge.lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
+                if (firstVertex >= 0) endpoints[firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
+                if (lastVertex >= 0) endpoints[lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
             }
         }
         for (auto& [vertex, list] : endpoints) {
@@ -163,6 +177,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (uses[e].empty()) continue;
         auto& poly = polylines[e];
         const ModelEdge& edge = model.edges[e];
+        const auto [firstVertex, lastVertex] = endVertices[e];
         const size_t n = poly.params.size();
         poly.vertices.assign(uses[e].size(), std::vector<std::uint32_t>(n));
         poly.inserted.assign(n - 1, {});
@@ -170,15 +185,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
         for (size_t k = 0; k < n; ++k) {
             const bool first = k == 0, last = k + 1 == n;
-            if ((first && edge.firstVertex >= 0) || (last && edge.lastVertex >= 0) ||
-                (edge.degenerated && edge.firstVertex >= 0)) {
-                const int vertex = (last && !edge.degenerated) ? edge.lastVertex : edge.firstVertex;
+            if ((first && firstVertex >= 0) || (last && lastVertex >= 0) ||
+                (edge.degenerated && firstVertex >= 0)) {
+                const int vertex = (last && !edge.degenerated) ? lastVertex : firstVertex;
                 for (size_t u = 0; u < uses[e].size(); ++u)
                     poly.vertices[u][k] = brepVertexId(vertex, uses[e][u].face);
                 continue;
             }
             std::vector<Point3> points;
             for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
+            if (std::getenv("NURBSLOD_DEBUG"))
+                for (size_t u = 0; u < points.size(); ++u)
+                    if (points[u].norm() > 1e4) {
+                        const Point2 uv = curves[u].uv(poly.params[k]);
+                        std::fprintf(stderr, "edge %zu use face %d s %.6g uv %.9g %.9g far\n", e,
+                                     uses[e][u].face + 1, poly.params[k], uv.x(), uv.y());
+                    }
             if (spread(points) <= budget.shareGap) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
@@ -263,6 +285,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return loops;
     };
 
+    if (std::getenv("NURBSLOD_TIMING"))
+        std::fprintf(stderr, "edges %.3f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     // 3. first pass over faces: kd-trees and the cuts of cell sides with the boundary
     std::vector<std::unique_ptr<FaceTessellator>> tessellators(faceCount);
     std::vector<std::vector<BoundaryCrossing>> crossings(faceCount);
@@ -270,8 +294,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
+            const auto t0 = std::chrono::steady_clock::now();
             tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
+            if (std::getenv("NURBSLOD_TIMING"))
+                std::fprintf(stderr, "face %d first pass %.3f s\n", f + 1,
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         } catch (const std::exception& e) {
             failure[f] = e.what();
             tessellators[f].reset();
@@ -380,17 +408,52 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (auto i : t) used[global[i]] = 1;
         }
     }
-    // drop shared positions no triangle uses (edges of failed faces)
+    // Drop positions no triangle uses (edges of failed faces) and weld points closer than
+    // 1e-4 of the tolerance: a cell side that cuts an edge next to one of its points leaves a
+    // sliver that is noise for the error but a degenerate triangle for whoever reads the mesh.
+    const double quantum = 1e-4 * options.tolerance;
+    std::unordered_map<std::int64_t, std::uint32_t> cellOfPoint;
+    auto cellKey = [&](const Point3& p, int dx, int dy, int dz) {
+        const auto x = (static_cast<std::int64_t>(std::floor(p.x() / quantum)) + dx) & 0x1fffff;
+        const auto y = (static_cast<std::int64_t>(std::floor(p.y() / quantum)) + dy) & 0x1fffff;
+        const auto z = (static_cast<std::int64_t>(std::floor(p.z() / quantum)) + dz) & 0x1fffff;
+        return (x << 42) | (y << 21) | z;
+    };
     std::vector<std::uint32_t> remap(mesh.positions.size());
     std::vector<Point3> kept;
-    for (size_t i = 0; i < mesh.positions.size(); ++i)
-        if (used[i]) {
-            remap[i] = static_cast<std::uint32_t>(kept.size());
-            kept.push_back(mesh.positions[i]);
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        if (!used[i]) continue;
+        const Point3& p = mesh.positions[i];
+        std::int64_t found = -1;
+        // the point's grid cell and its neighbours: two close points may straddle a cell border
+        for (int dx = -1; dx <= 1 && found < 0; ++dx)
+            for (int dy = -1; dy <= 1 && found < 0; ++dy)
+                for (int dz = -1; dz <= 1 && found < 0; ++dz)
+                    if (auto it = cellOfPoint.find(cellKey(p, dx, dy, dz));
+                        it != cellOfPoint.end() && (kept[it->second] - p).norm() <= quantum)
+                        found = it->second;
+        if (found >= 0) {
+            remap[i] = static_cast<std::uint32_t>(found);
+            continue;
         }
+        remap[i] = static_cast<std::uint32_t>(kept.size());
+        cellOfPoint.emplace(cellKey(p, 0, 0, 0), remap[i]);
+        kept.push_back(p);
+    }
     mesh.positions = std::move(kept);
-    for (auto& t : mesh.triangles)
-        for (auto& i : t) i = remap[i];
+    std::size_t out = 0;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        auto tri = mesh.triangles[t];
+        for (auto& i : tri) i = remap[i];
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+        mesh.triangles[out] = tri;
+        mesh.triangleNormals[out] = mesh.triangleNormals[t];
+        mesh.triangleFaces[out] = mesh.triangleFaces[t];
+        ++out;
+    }
+    mesh.triangles.resize(out);
+    mesh.triangleNormals.resize(out);
+    mesh.triangleFaces.resize(out);
 
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

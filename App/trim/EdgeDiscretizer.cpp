@@ -7,8 +7,10 @@ namespace nurbslod {
 
 namespace {
 
-// Deep enough for any real edge (2^-30 of its length), shallow enough to stop on a broken one.
-constexpr int kMaxDepth = 30;
+// Deep enough for any real edge (2^-24 of its length); a broken edge (a pcurve that jumps, a
+// NaN) would otherwise split for ever: past kMaxPoints the remaining pieces are taken as they are.
+constexpr int kMaxDepth = 24;
+constexpr size_t kMaxPoints = 4096;
 
 bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, double eps) {
     for (const auto& use : uses) {
@@ -38,7 +40,8 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
         auto [interval, depth] = stack.back();
         stack.pop_back();
         auto [s0, s1] = interval;
-        if (depth < kMaxDepth && !flatEnough(uses, s0, s1, approximation)) {
+        if (depth < kMaxDepth && params.size() + stack.size() < kMaxPoints &&
+            !flatEnough(uses, s0, s1, approximation)) {
             const double mid = 0.5 * (s0 + s1);
             stack.push_back({{mid, s1}, depth + 1});
             stack.push_back({{s0, mid}, depth + 1});

@@ -1,0 +1,340 @@
+// The Python module NurbsLOD: the macro API of the workbench.
+//
+// FreeCAD ships no C++ headers, so a FreeCAD shape crosses into C++ as the BREP text of
+// shape.exportBrepToString(), which carries it exactly (DESIGN.md). Everything after that is
+// plain C++ run without the GIL, so other Python threads (a macro's worker thread, FreeCAD's
+// own) keep running while a large model is tessellated.
+//
+// Nothing here may crash FreeCAD: a crash loses the user's unsaved work. Every failure,
+// including OpenCASCADE's own exceptions (which do not derive from std::exception), becomes a
+// Python exception with a message that says what was wrong.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <Standard_Failure.hxx>
+#include <TopoDS_Shape.hxx>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "io/MeshWriter.hpp"
+#include "occ/ModelImporter.hpp"
+#include "occ/ShapeReader.hpp"
+#include "tessellate/ModelTessellator.hpp"
+
+namespace py = pybind11;
+
+namespace nurbslod::python {
+namespace {
+
+// Used when the caller gives neither an absolute nor a relative tolerance; the command line's
+// default too, so both give the same mesh for the same model.
+constexpr double defaultRelativeTolerance = 1e-3;
+
+// Where the model comes from. Read while the GIL is held (a FreeCAD shape is a Python
+// object); turned into a TopoDS_Shape after the GIL is released.
+struct ShapeSource {
+    bool isPath = false;
+    std::string text;  // the file path, or the BREP text of a FreeCAD shape
+};
+
+// The caller's tolerance, validated before any work so a typo fails at once.
+struct ToleranceRequest {
+    std::optional<double> absolute;
+    std::optional<double> relative;
+};
+
+std::string typeName(const py::handle& object) {
+    return py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>();
+}
+
+ShapeSource shapeSource(const py::object& shape) {
+    if (py::isinstance<py::str>(shape)) {
+        return {true, shape.cast<std::string>()};
+    }
+    if (py::hasattr(shape, "__fspath__")) {  // pathlib.Path and friends
+        return {true, py::module_::import("os").attr("fspath")(shape).cast<std::string>()};
+    }
+    if (py::hasattr(shape, "exportBrepToString")) {  // Part.Shape, Part.Face, Part.Solid...
+        return {false, shape.attr("exportBrepToString")().cast<std::string>()};
+    }
+    // A document object (Part::Feature): tessellate what it shows.
+    if (py::hasattr(shape, "Shape") && py::hasattr(shape.attr("Shape"), "exportBrepToString")) {
+        return {false, shape.attr("Shape").attr("exportBrepToString")().cast<std::string>()};
+    }
+    throw py::type_error("NurbsLOD: expected a Part.Shape, a Part object or a file path, got " +
+                         typeName(shape));
+}
+
+void requirePositiveFinite(const std::optional<double>& value, const char* name) {
+    if (value && !(std::isfinite(*value) && *value > 0)) {
+        throw py::value_error(std::string("NurbsLOD: ") + name +
+                              " must be a positive finite number, got " +
+                              py::repr(py::float_(*value)).cast<std::string>());
+    }
+}
+
+ToleranceRequest toleranceRequest(std::optional<double> tolerance, std::optional<double> relative) {
+    if (tolerance && relative) {
+        throw py::value_error(
+            "NurbsLOD: give either tolerance (absolute, model units) or relative (fraction of "
+            "the bounding box diagonal), not both");
+    }
+    requirePositiveFinite(tolerance, "tolerance");
+    requirePositiveFinite(relative, "relative");
+    if (!tolerance && !relative) {
+        relative = defaultRelativeTolerance;
+    }
+    return {tolerance, relative};
+}
+
+ErrorMode errorMode(const std::string& mode) {
+    if (mode == "guaranteed") {
+        return ErrorMode::Guaranteed;
+    }
+    if (mode == "approximate") {
+        return ErrorMode::Approximate;
+    }
+    throw py::value_error("NurbsLOD: mode must be \"guaranteed\" or \"approximate\", got \"" +
+                          mode + "\"");
+}
+
+const char* modeName(ErrorMode mode) {
+    return mode == ErrorMode::Guaranteed ? "guaranteed" : "approximate";
+}
+
+int threadCount(int threads) {
+    if (threads < 0) {
+        throw py::value_error("NurbsLOD: threads must be 0 (all cores) or a positive count, got " +
+                              std::to_string(threads));
+    }
+    return threads;
+}
+
+// Runs without the GIL: reading, importing and tessellating are pure C++.
+TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
+                                    TessellationOptions options) {
+    const TopoDS_Shape shape =
+        source.isPath ? occ::readShape(source.text) : occ::shapeFromBrepString(source.text);
+    const Model model = occ::importModel(shape);
+    if (model.faces.empty()) {
+        throw std::invalid_argument("NurbsLOD: the shape has no faces to tessellate");
+    }
+    if (request.absolute) {
+        options.tolerance = *request.absolute;
+    } else {
+        options.tolerance = *request.relative * model.boundingBoxDiagonal;
+        if (!(std::isfinite(options.tolerance) && options.tolerance > 0)) {
+            throw std::invalid_argument(
+                "NurbsLOD: the shape has an empty bounding box, so a relative tolerance means "
+                "nothing; give an absolute tolerance");
+        }
+    }
+    return tessellateModel(model, options);
+}
+
+using Clock = std::chrono::steady_clock;
+
+struct Call {
+    Clock::time_point start = Clock::now();  // for the summary's total_seconds
+    ShapeSource source;
+    ToleranceRequest tolerance;
+    TessellationOptions options;
+};
+
+// Checks every argument before the (possibly long) work starts.
+Call parseCall(const py::object& shape, std::optional<double> tolerance,
+               std::optional<double> relative, const std::string& mode, int threads) {
+    Call call;
+    call.tolerance = toleranceRequest(tolerance, relative);
+    call.options.mode = errorMode(mode);
+    call.options.threads = threadCount(threads);
+    call.source = shapeSource(shape);
+    return call;
+}
+
+TessellationResult run(const Call& call) {
+    py::gil_scoped_release release;
+    return tessellateSource(call.source, call.tolerance, call.options);
+}
+
+// The summary has the keys of the command line's JSON summary, so scripts can use either.
+// total_seconds counts everything from the call on; seconds only the tessellation.
+py::dict summaryDict(const TessellationResult& result, const Call& call,
+                     const std::optional<std::string>& output = std::nullopt) {
+    py::list failures;
+    for (const FaceFailure& failure : result.failures) {
+        py::dict entry;
+        entry["face"] = failure.face;
+        entry["reason"] = failure.reason;
+        failures.append(entry);
+    }
+    py::dict summary;
+    summary["faces"] = result.faces;
+    summary["triangles"] = result.mesh.triangles.size();
+    summary["vertices"] = result.mesh.positions.size();
+    summary["seconds"] = result.seconds;
+    summary["total_seconds"] = std::chrono::duration<double>(Clock::now() - call.start).count();
+    summary["tolerance"] = result.tolerance;
+    summary["mode"] = modeName(call.options.mode);
+    if (output) {
+        summary["output"] = *output;
+    }
+    summary["faces_failed"] = failures;
+    return summary;
+}
+
+py::array_t<double> vectorArray(const std::vector<Vector3>& vectors) {
+    py::array_t<double> array({static_cast<py::ssize_t>(vectors.size()), py::ssize_t{3}});
+    auto view = array.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+        for (py::ssize_t j = 0; j < 3; ++j) {
+            view(i, j) = vectors[static_cast<std::size_t>(i)][j];
+        }
+    }
+    return array;
+}
+
+py::array_t<std::uint32_t> indexArray(const std::vector<std::array<std::uint32_t, 3>>& indices) {
+    py::array_t<std::uint32_t> array({static_cast<py::ssize_t>(indices.size()), py::ssize_t{3}});
+    auto view = array.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+        for (py::ssize_t j = 0; j < 3; ++j) {
+            view(i, j) = indices[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+        }
+    }
+    return array;
+}
+
+py::dict tessellate(const py::object& shape, std::optional<double> tolerance,
+                    std::optional<double> relative, const std::string& mode, int threads) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    const TessellationResult result = run(call);
+    const Mesh& mesh = result.mesh;
+    py::dict out;
+    out["points"] = vectorArray(mesh.positions);
+    out["normals"] = vectorArray(mesh.normals);
+    out["triangles"] = indexArray(mesh.triangles);
+    out["triangle_normals"] = indexArray(mesh.triangleNormals);
+    out["face_ids"] = py::array_t<std::int32_t>(static_cast<py::ssize_t>(mesh.triangleFaces.size()),
+                                                mesh.triangleFaces.data());
+    out["summary"] = summaryDict(result, call);
+    return out;
+}
+
+py::dict exportMesh(const py::object& shape, const py::object& path,
+                    std::optional<double> tolerance, std::optional<double> relative,
+                    const std::string& mode, int threads) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    const std::string outPath = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+    const TessellationResult result = run(call);
+    {
+        py::gil_scoped_release release;
+        writeMesh(result.mesh, outPath);
+    }
+    return summaryDict(result, call, outPath);
+}
+
+py::object toMesh(const py::object& shape, std::optional<double> tolerance,
+                  std::optional<double> relative, const std::string& mode, int threads) {
+    // Imported first: outside FreeCAD there is no point tessellating.
+    py::module_ meshModule;
+    py::module_ freecad;
+    try {
+        meshModule = py::module_::import("Mesh");
+        freecad = py::module_::import("FreeCAD");
+    } catch (py::error_already_set& error) {
+        throw py::import_error(std::string("NurbsLOD.to_mesh needs FreeCAD's Mesh module: ") +
+                               error.what());
+    }
+    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    const TessellationResult result = run(call);
+    const Mesh& mesh = result.mesh;
+
+    // Mesh.addFacets((points, facets)) wants FreeCAD.Vector points and tuple facets: FreeCAD
+    // 0.20 crashes when the points are plain tuples.
+    const py::object vectorType = freecad.attr("Vector");
+    py::list points(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Point3& p = mesh.positions[i];
+        points[i] = vectorType(p.x(), p.y(), p.z());
+    }
+    py::list facets(mesh.triangles.size());
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        facets[i] = py::make_tuple(t[0], t[1], t[2]);
+    }
+    py::object freecadMesh = meshModule.attr("Mesh")();
+    freecadMesh.attr("addFacets")(py::make_tuple(points, facets));
+    return freecadMesh;
+}
+
+void translateOpenCascadeFailures() {
+    py::register_exception_translator([](std::exception_ptr error) {
+        try {
+            if (error) {
+                std::rethrow_exception(error);
+            }
+        } catch (const Standard_Failure& failure) {
+            const std::string message = std::string("NurbsLOD: OpenCASCADE failed: ") +
+                                        failure.DynamicType()->Name() + ": " +
+                                        failure.GetMessageString();
+            PyErr_SetString(PyExc_RuntimeError, message.c_str());
+        }
+    });
+}
+
+}  // namespace
+}  // namespace nurbslod::python
+
+PYBIND11_MODULE(NurbsLOD, m) {
+    using namespace nurbslod::python;
+    m.doc() =
+        "NurbsLOD: tessellation of trimmed NURBS B-rep models with a guaranteed error.\n\n"
+        "shape arguments take a Part.Shape, a document object with a Shape, or a path to a\n"
+        "STEP, IGES or BREP file. Give either tolerance (absolute, model units) or relative\n"
+        "(fraction of the bounding box diagonal); with neither, relative=1e-3.";
+
+    py::register_exception<nurbslod::occ::ModelReadError>(m, "ReadError", PyExc_ValueError);
+    translateOpenCascadeFailures();
+
+    m.def("tessellate", &tessellate, py::arg("shape"), py::arg("tolerance") = py::none(),
+          py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          R"(Tessellates every face of the shape within the tolerance.
+
+mode: "guaranteed" (the mesh never deviates more than the tolerance) or "approximate"
+(the paper's approximate error: fewer triangles). threads: 0 uses all cores.
+
+Returns a dict of numpy arrays and a summary:
+  points           (N, 3) float64  vertex positions, shared where faces meet
+  triangles        (T, 3) uint32   indices into points
+  normals          (M, 3) float64  unit normals, per face: a crease keeps one on each side
+  triangle_normals (T, 3) uint32   indices into normals, one per triangle corner
+  face_ids         (T,)   int32    1-based face index: shape.Faces[face_id - 1]
+  summary          dict: faces, triangles, vertices, seconds (tessellation),
+                   total_seconds (the whole call), tolerance (absolute), mode,
+                   faces_failed (list of {face, reason}); the keys of the command
+                   line's JSON summary
+
+Raises ValueError for a bad tolerance, mode or thread count, NurbsLOD.ReadError (a
+ValueError) for a file or shape that cannot be read.)");
+
+    m.def("export", &exportMesh, py::arg("shape"), py::arg("path"),
+          py::arg("tolerance") = py::none(), py::arg("relative") = py::none(),
+          py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          R"(Tessellates the shape like tessellate() and writes the mesh to path.
+
+The format follows the extension: .obj (one group per face, "g FaceN"), .ply, .stl, .off.
+Returns the summary dict of tessellate(), with "output" (the path) added.)");
+
+    m.def("to_mesh", &toMesh, py::arg("shape"), py::arg("tolerance") = py::none(),
+          py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          R"(Tessellates the shape like tessellate() and returns a FreeCAD Mesh.Mesh.
+
+Needs FreeCAD (freecad or freecadcmd).)");
+}

@@ -1,0 +1,93 @@
+"""The command "Export certified mesh": the selected Part objects to OBJ, PLY, STL or OFF.
+
+export_objects() does the work and needs no GUI, so it is tested headless; the command
+class only adds the file dialog and the report view.
+"""
+
+import os
+
+import FreeCAD
+
+COMMAND_NAME = "NurbsLOD_ExportCertifiedMesh"
+
+FILE_FILTERS = ";;".join(
+    ("Wavefront OBJ (*.obj)", "Stanford PLY (*.ply)", "STL (*.stl)", "Object File Format (*.off)")
+)
+
+
+def shapes_of(objects):
+    """The non-empty shapes of the objects that have one (Part features, bodies, ...)."""
+    return [obj.Shape for obj in objects if hasattr(obj, "Shape") and not obj.Shape.isNull()]
+
+
+def export_objects(objects, path, relative=1e-3):
+    """Tessellates the objects' shapes together and writes one mesh file; returns the summary.
+
+    Several objects become one compound, so face ids in the file count across all of them in
+    selection order. Raises ValueError when no object has a shape.
+    """
+    import Part
+
+    import NurbsLOD
+
+    shapes = shapes_of(objects)
+    if not shapes:
+        raise ValueError("NurbsLOD: select at least one object with a shape")
+    shape = shapes[0] if len(shapes) == 1 else Part.makeCompound(shapes)
+    return NurbsLOD.export(shape, path, relative=relative)
+
+
+def describe(summary):
+    """The report view's line for a finished export."""
+    return (
+        "NurbsLOD: wrote {output}: {triangles} triangles, {vertices} vertices, {faces} faces "
+        "within {tolerance:.4g} ({mode}) in {seconds:.2f} s\n".format(**summary)
+    )
+
+
+class ExportCertifiedMesh:
+    def GetResources(self):
+        import NurbsLODPaths
+
+        return {
+            "Pixmap": NurbsLODPaths.icon("NurbsLOD.svg"),
+            "MenuText": "Export certified mesh",
+            "ToolTip": "Write the selected objects as a mesh that deviates from them by at most "
+            "1/1000 of their size",
+        }
+
+    def IsActive(self):
+        import FreeCADGui
+
+        return bool(shapes_of(FreeCADGui.Selection.getSelection()))
+
+    def Activated(self):
+        import FreeCADGui
+        from PySide import QtCore, QtGui
+
+        objects = FreeCADGui.Selection.getSelection()
+        path, chosen_filter = QtGui.QFileDialog.getSaveFileName(
+            FreeCADGui.getMainWindow(), "Export certified mesh", "", FILE_FILTERS
+        )
+        if not path:
+            return
+        if not os.path.splitext(path)[1]:  # the writer picks the format by extension
+            path += chosen_filter[chosen_filter.rfind("*") + 1 : -1] or ".obj"
+        QtGui.QApplication.setOverrideCursor(QtGui.QCursor(QtCore.Qt.WaitCursor))
+        try:
+            summary = export_objects(objects, path)
+        except Exception as error:  # a command must not raise: tell the user instead
+            FreeCAD.Console.PrintError("NurbsLOD: export failed: {}\n".format(error))
+            return
+        finally:
+            QtGui.QApplication.restoreOverrideCursor()
+        FreeCAD.Console.PrintMessage(describe(summary))
+        for failure in summary["faces_failed"]:
+            FreeCAD.Console.PrintWarning(
+                "NurbsLOD: face {face} not tessellated: {reason}\n".format(**failure))
+
+
+if FreeCAD.GuiUp:
+    import FreeCADGui
+
+    FreeCADGui.addCommand(COMMAND_NAME, ExportCertifiedMesh())

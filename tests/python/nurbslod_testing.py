@@ -1,0 +1,41 @@
+"""What the Python tests share: where things are, and small checks on meshes."""
+
+import os
+import shutil
+import tempfile
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BUILD_DIR = os.environ.get("NURBSLOD_BUILD_DIR") or os.path.join(ROOT, "build")
+CLI = os.path.join(BUILD_DIR, "App", "nurbslod")
+# Real CAD models beside the checkout (../shared/corpus); absent on some machines.
+CORPUS_DIR = os.path.join(os.path.dirname(ROOT), "shared", "corpus")
+
+
+def corpus_file(name):
+    """Path of a corpus model; skips the test when the corpus is absent."""
+    path = os.path.join(CORPUS_DIR, name)
+    if not os.path.isfile(path):
+        raise unittest.SkipTest("corpus model {} absent".format(path))
+    return path
+
+
+class TempDirTestCase(unittest.TestCase):
+    """A test case with a fresh folder self.tmp, removed afterwards."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="nurbslod-test-")
+        self.addCleanup(shutil.rmtree, self.tmp, True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+
+def edge_use_counts(triangles):
+    """How many triangles use each undirected edge, keyed by (low, high) vertex index."""
+    counts = {}
+    for a, b, c in triangles.tolist():
+        for u, v in ((a, b), (b, c), (c, a)):
+            key = (u, v) if u < v else (v, u)
+            counts[key] = counts.get(key, 0) + 1
+    return counts

@@ -1,0 +1,97 @@
+"""The command-line tool build/App/nurbslod: bad input exits 2 with a message, good input
+writes a mesh and ends its output with a JSON summary."""
+
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+
+import Part
+
+import NurbsLOD
+from nurbslod_testing import CLI, TempDirTestCase
+
+BAD_INPUT = 2
+
+
+class CommandLine(TempDirTestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.models = tempfile.mkdtemp(prefix="nurbslod-cli-")
+        cls.model = os.path.join(cls.models, "box.step")
+        Part.makeBox(10, 20, 30).exportStep(cls.model)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.models, True)
+
+    def setUp(self):
+        super().setUp()
+        self.assertTrue(os.access(CLI, os.X_OK), "the build has no " + CLI)
+
+    def nurbslod(self, *args):
+        return subprocess.run([CLI, *args], stdin=subprocess.DEVNULL, capture_output=True,
+                              text=True, timeout=300)
+
+    def assertBadInput(self, args, message=None):
+        run = self.nurbslod(*args)
+        self.assertEqual(run.returncode, BAD_INPUT,
+                         "nurbslod {}: {}{}".format(" ".join(args), run.stdout, run.stderr))
+        self.assertTrue(run.stderr.strip(), "no message for nurbslod " + " ".join(args))
+        if message:
+            self.assertIn(message, run.stderr)
+
+    def test_tessellate_writes_obj_and_summary(self):
+        out = self.path("box.obj")
+        run = self.nurbslod("tessellate", self.model, "-o", out, "--tolerance", "0.01")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        summary = json.loads(run.stdout.strip().splitlines()[-1])
+        self.assertGreater(summary["triangles"], 0)
+        with open(out) as obj:
+            facets = sum(1 for line in obj if line.startswith("f "))
+        self.assertEqual(facets, summary["triangles"])
+        # the Python module reports the same, under the same keys
+        python = NurbsLOD.export(self.model, self.path("python.obj"), tolerance=0.01)
+        self.assertEqual(sorted(python), sorted(summary))
+        for key in ("faces", "triangles", "vertices", "tolerance", "mode", "faces_failed"):
+            self.assertEqual(python[key], summary[key], key)
+
+    def test_missing_model(self):
+        missing = self.path("missing.step")
+        self.assertBadInput(["tessellate", missing, "-o", self.path("out.obj")], "missing.step")
+
+    def test_folder_as_model(self):
+        self.assertBadInput(["tessellate", self.tmp, "-o", self.path("out.obj")])
+
+    def test_malformed_step(self):
+        garbage = self.path("garbage.step")
+        with open(garbage, "w") as out:
+            out.write("ISO-10303-21;\nHEADER;\nthis is not STEP at all\n")
+        self.assertBadInput(["tessellate", garbage, "-o", self.path("out.obj")], "garbage.step")
+        self.assertFalse(os.path.exists(self.path("out.obj")))
+
+    def test_bad_tolerances(self):
+        for option in ("--tolerance", "--relative"):
+            for value in ("0", "-1", "nan", "inf", "abc"):
+                with self.subTest(option=option, value=value):
+                    self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),
+                                         option, value])
+
+    def test_both_tolerances(self):
+        self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),
+                             "--tolerance", "0.1", "--relative", "1e-3"])
+
+    def test_bad_mode(self):
+        self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),
+                             "--tolerance", "0.1", "--mode", "exact"])
+
+    def test_verify_bad_input(self):
+        mesh = self.path("box.obj")
+        with open(mesh, "w") as out:
+            out.write("v 0 0 0\nv 1 0 0\nv 0 1 0\ng Face1\nf 1 2 3\n")
+        self.assertBadInput(["verify", self.path("missing.step"), mesh, "--tolerance", "0.1"])
+        self.assertBadInput(["verify", self.model, self.path("missing.obj"), "--tolerance", "0.1"])
+        for value in ("0", "-1", "nan", "abc"):
+            with self.subTest(tolerance=value):
+                self.assertBadInput(["verify", self.model, mesh, "--tolerance", value])
