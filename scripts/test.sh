@@ -51,6 +51,10 @@ if ! ninja -C "$BUILD_DIR" -j"$(nproc)"; then
     finish
 fi
 
+# A runaway allocation must fail its test, not wake the OOM killer, which may kill some
+# other process on a shared machine: cap each test process at half the memory.
+ulimit -v $(($(awk '/^MemTotal:/ { print $2 }' /proc/meminfo) / 2))
+
 say "unit tests (ctest)"
 # The JUnit report says which tests ran, failed or were skipped (GTEST_SKIP, missing corpus).
 # A test that runs for ten minutes hangs: fail it rather than let it eat CI's 90 minutes.

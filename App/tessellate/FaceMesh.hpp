@@ -14,8 +14,8 @@ struct FaceMesh {
     struct Vertex {
         bool shared = false;
         std::uint32_t sharedId = 0;
-        Point3 position;  // for the face's own vertices
-        Vector3 normal;   // the face's exact normal at the vertex
+        Point3 position = Point3::Zero();  // for the face's own vertices
+        Vector3 normal = Vector3::Zero();  // the face's exact normal at the vertex
     };
     std::vector<Vertex> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise

@@ -478,7 +478,11 @@ void splitNeedles(FaceMesh& mesh) {
         for (int k = 0; k < 3; ++k)
             triangleOfEdge[{mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3]}] = i;
     std::vector<char> removed(mesh.triangles.size(), 0);
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    // each split removes one needle; a split can make a new needle of a neighbour, so the
+    // passes are bounded by the number of triangles that were there at the start
+    const std::size_t maxSplits = mesh.triangles.size();
+    std::size_t splits = 0;
+    for (std::size_t i = 0; i < mesh.triangles.size() && splits < maxSplits; ++i) {
         int longest = 0;
         if (removed[i] || !isNeedle(mesh.triangles[i], longest)) continue;
         const auto needle = mesh.triangles[i];
@@ -494,6 +498,7 @@ void splitNeedles(FaceMesh& mesh) {
         const std::uint32_t d = other[(at + 2) % 3];
         if (d == c) continue;
         // (b, a, d) becomes (b, c, d) and (c, a, d); the needle goes
+        ++splits;
         removed[i] = 1;
         mesh.triangles[j] = {b, c, d};
         mesh.triangles.push_back({c, a, d});
@@ -546,7 +551,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<B
                     const BoundarySegmentOrigin& origin = loops[s.loop].origins[s.index];
                     if (origin.edge < 0) continue;
                     // t runs along the loop; the edge may run the other way
-                    crossings.push_back({origin.edge, origin.segment, origin.forward ? t : 1 - t, p.X, p.Y});
+                    crossings.push_back({origin.edge, origin.segment, origin.use, origin.forward ? t : 1 - t, p.X, p.Y});
                 }
     });
     return crossings;

@@ -220,8 +220,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (size_t u = 0; u < uses[e].size(); ++u)
             useIndex[{uses[e][u].face, uses[e][u].loop, uses[e][u].curve}] = static_cast<int>(u);
 
-    // exact integer points of cuts, by (face, shared vertex)
-    std::map<std::pair<int, std::uint32_t>, std::pair<std::int64_t, std::int64_t>> exactPoints;
+    // exact integer points of cuts, by (edge, use, shared vertex): the two sides of a seam are
+    // two uses of one edge in one face and share the vertex, but not the (u, v) point
+    std::map<std::tuple<int, int, std::uint32_t>, std::pair<std::int64_t, std::int64_t>> exactPoints;
 
     // a face's boundary polygons from the shared polylines
     auto boundaryOf = [&](int f) {
@@ -245,7 +246,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     for (const auto& ins : poly.inserted[k]) {
                         BoundaryPoint p{(1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
                                         ins.vertices[u]};
-                        if (auto it = exactPoints.find({f, p.vertex}); it != exactPoints.end()) {
+                        if (auto it = exactPoints.find({e, u, p.vertex}); it != exactPoints.end()) {
                             p.exact = true;
                             p.x = it->second.first;
                             p.y = it->second.second;
@@ -264,15 +265,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 if (!loop.points.empty() && loop.points.back().vertex == points.front().vertex &&
                     points.size() > 1) {
                     startIndex = 1;
-                    loop.origins.back() = {e, forward ? segmentAfter[0] : segmentAfter[1], forward};
+                    loop.origins.back() = {e, forward ? segmentAfter[0] : segmentAfter[1], forward, u};
                 }
                 for (size_t i = startIndex; i < points.size(); ++i) {
                     loop.points.push_back(points[i]);
                     // segment from this point to the next one of the curve
                     int segment = forward ? segmentAfter[i] : (i + 1 < points.size() ? segmentAfter[i + 1] : 0);
-                    loop.origins.push_back({e, segment, forward});
+                    loop.origins.push_back({e, segment, forward, u});
                 }
-                loop.origins.back() = {-1, 0, true};  // to the next curve, until joined
+                loop.origins.back() = {-1, 0, true, 0};  // to the next curve, until joined
             }
             // close: the last point equal to the first is one point
             if (loop.points.size() > 1 && loop.points.back().vertex == loop.points.front().vertex) {
@@ -310,7 +311,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     {
         std::map<std::pair<int, int>, std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>> cuts;
         for (int f = 0; f < faceCount; ++f)
-            for (const auto& c : crossings[f]) cuts[{c.edge, c.segment}].push_back({c.lambda, f, c.x, c.y});
+            for (const auto& c : crossings[f]) cuts[{c.edge, c.segment}].push_back({c.lambda, c.use, c.x, c.y});
         for (auto& [key, list] : cuts) {
             auto [e, k] = key;
             auto& poly = polylines[e];
@@ -325,10 +326,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 std::fprintf(stderr, "edge %d seg %d uses", e, k);
                 for (auto& u : uses[e]) std::fprintf(stderr, " %d", u.face + 1);
                 std::fprintf(stderr, " cuts");
-                for (auto& [lambda, f, x, y] : list) std::fprintf(stderr, " (%.4f by %d)", lambda, f + 1);
+                for (auto& [lambda, use, x, y] : list) std::fprintf(stderr, " (%.4f by use %d)", lambda, use);
                 std::fprintf(stderr, "\n");
             }
-            for (auto& [lambda, f, x, y] : list) {
+            for (auto& [lambda, use, x, y] : list) {
                 if (lambda <= 0 || lambda >= 1) continue;
                 if (lambda - lastLambda > 1e-9) {
                     EdgePolyline::Inserted ins{lambda, std::vector<std::uint32_t>(useCount)};
@@ -344,10 +345,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     poly.inserted[k].push_back(std::move(ins));
                     lastLambda = lambda;
                 }
-                // the face that found the cut places it exactly where its clipper did
-                for (size_t u = 0; u < useCount; ++u)
-                    if (uses[e][u].face == f)
-                        exactPoints[{f, poly.inserted[k].back().vertices[u]}] = {x, y};
+                // the side that found the cut places it exactly where its clipper did
+                exactPoints[{e, use, poly.inserted[k].back().vertices[use]}] = {x, y};
             }
         }
     }
