@@ -42,8 +42,7 @@ std::optional<std::string> BSplineCurve2d::problem() const {
     for (size_t k = 0; k < poles_.size(); ++k) {
         if (!poles_[k].allFinite())
             return "trimming curve control point " + std::to_string(k) + " is not finite";
-        if (!(poles_[k][2] > 0))
-            return "trimming curve weight " + std::to_string(k) + " is <= 0";
+        if (!(poles_[k][2] > 0)) return "trimming curve weight " + std::to_string(k) + " is <= 0";
     }
     return std::nullopt;
 }

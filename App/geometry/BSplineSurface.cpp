@@ -80,20 +80,19 @@ BSplineSurface::FirstDerivatives BSplineSurface::derivatives(double u, double v)
 }
 
 Vector3 BSplineSurface::normal(double u, double v) const {
-    auto d = derivatives(u, v);
-    Vector3 n = d.du.cross(d.dv);
-    const double scale = d.du.norm() * d.dv.norm();
-    if (n.norm() > 1e-12 * scale && scale > 0) return n.normalized();
-    // degenerate: step towards the middle of the domain in growing steps
-    const double um = 0.5 * (u_.first() + u_.last()), vm = 0.5 * (v_.first() + v_.last());
-    for (double step = 1e-7; step < 0.2; step *= 10) {
-        const double uu = u + step * (um - u) + step * (u_.last() - u_.first()) * 1e-3 *
-                                                    (um >= u ? 1.0 : -1.0);
-        const double vv = v + step * (vm - v) + step * (v_.last() - v_.first()) * 1e-3 *
-                                                    (vm >= v ? 1.0 : -1.0);
-        d = derivatives(uu, vv);
+    // du x dv is reliable only where neither derivative has collapsed: at a pole (a sphere's
+    // tip) du is rounding noise and so is the direction of du x dv. There the normal is taken a
+    // growing step inside the domain: the limit a display wants.
+    auto reliable = [](const FirstDerivatives& d, Vector3& n) {
+        const double a = d.du.norm(), b = d.dv.norm();
         n = d.du.cross(d.dv);
-        if (n.norm() > 1e-12 * d.du.norm() * d.dv.norm() && n.norm() > 0) return n.normalized();
+        return a > 1e-8 * b && b > 1e-8 * a && n.norm() > 1e-10 * a * b;
+    };
+    Vector3 n;
+    if (reliable(derivatives(u, v), n)) return n.normalized();
+    const double um = 0.5 * (u_.first() + u_.last()), vm = 0.5 * (v_.first() + v_.last());
+    for (double step = 1e-6; step <= 0.5; step *= 4) {
+        if (reliable(derivatives(u + step * (um - u), v + step * (vm - v)), n)) return n.normalized();
     }
     return Vector3(0, 0, 1);
 }

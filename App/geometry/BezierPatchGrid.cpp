@@ -54,14 +54,17 @@ BezierPatchGrid::BezierPatchGrid(const BSplineSurface& surface)
     for (int j = 0; j < cv; ++j) {
         auto segs = decomposeIntoBezierSegments(surface.knotsU(), &surface.poles()[j], cv);
         for (int s = 0; s < nu; ++s)
-            for (int i = 0; i <= pu; ++i) strips[(s * (pu + 1) + i) * cv + j] = segs[s * (pu + 1) + i];
+            for (int i = 0; i <= pu; ++i)
+                strips[(s * (pu + 1) + i) * cv + j] = segs[s * (pu + 1) + i];
     }
     patches_.assign(static_cast<size_t>(nu * nv), BezierPatch(pu, pv));
     for (int s = 0; s < nu; ++s)
         for (int i = 0; i <= pu; ++i) {
-            auto segs = decomposeIntoBezierSegments(surface.knotsV(), &strips[(s * (pu + 1) + i) * cv], 1);
+            auto segs =
+                decomposeIntoBezierSegments(surface.knotsV(), &strips[(s * (pu + 1) + i) * cv], 1);
             for (int t = 0; t < nv; ++t)
-                for (int j = 0; j <= pv; ++j) patches_[s * nv + t].pole(i, j) = segs[t * (pv + 1) + j];
+                for (int j = 0; j <= pv; ++j)
+                    patches_[s * nv + t].pole(i, j) = segs[t * (pv + 1) + j];
         }
 }
 
@@ -73,7 +76,11 @@ int spanIndex(const std::vector<double>& breaks, double t) {
 }
 }  // namespace
 
-int BezierPatchGrid::spanIndexU(double u) const { return spanIndex(breaksU_, u); }
-int BezierPatchGrid::spanIndexV(double v) const { return spanIndex(breaksV_, v); }
+int BezierPatchGrid::spanIndexU(double u) const {
+    return spanIndex(breaksU_, u);
+}
+int BezierPatchGrid::spanIndexV(double v) const {
+    return spanIndex(breaksV_, v);
+}
 
 }  // namespace nurbslod

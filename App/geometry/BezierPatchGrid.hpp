@@ -17,7 +17,9 @@ public:
     const std::vector<double>& breakpointsV() const { return breaksV_; }
     int spansU() const { return static_cast<int>(breaksU_.size()) - 1; }
     int spansV() const { return static_cast<int>(breaksV_.size()) - 1; }
-    const BezierPatch& patch(int spanU, int spanV) const { return patches_[spanU * spansV() + spanV]; }
+    const BezierPatch& patch(int spanU, int spanV) const {
+        return patches_[spanU * spansV() + spanV];
+    }
 
     // The span index containing t (clamped to the domain).
     int spanIndexU(double u) const;

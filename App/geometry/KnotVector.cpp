@@ -51,7 +51,8 @@ std::optional<std::string> KnotVector::problem(int controlPoints) const {
     if (!(last() > first())) return "the knot vector spans an empty parameter range";
     // a multiplicity above degree+1 would make the curve discontinuous
     for (size_t i = 0, j; i < knots_.size(); i = j) {
-        for (j = i; j < knots_.size() && knots_[j] == knots_[i]; ++j) {}
+        for (j = i; j < knots_.size() && knots_[j] == knots_[i]; ++j) {
+        }
         if (static_cast<int>(j - i) > degree_ + 1)
             return "knot " + std::to_string(knots_[i]) + " has multiplicity above degree+1";
     }

@@ -13,7 +13,11 @@ using Vector3 = Eigen::Vector3d;
 using HomogeneousPoint2 = Eigen::Vector3d;
 using HomogeneousPoint3 = Eigen::Vector4d;
 
-inline Point3 projectHomogeneous(const HomogeneousPoint3& p) { return p.head<3>() / p[3]; }
-inline Point2 projectHomogeneous(const HomogeneousPoint2& p) { return p.head<2>() / p[2]; }
+inline Point3 projectHomogeneous(const HomogeneousPoint3& p) {
+    return p.head<3>() / p[3];
+}
+inline Point2 projectHomogeneous(const HomogeneousPoint2& p) {
+    return p.head<2>() / p[2];
+}
 
 }  // namespace nurbslod

@@ -29,9 +29,7 @@
 
 namespace nurbslod::occ {
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & s) {
     std::vector<double> knotsU, knotsV;
@@ -73,8 +71,8 @@ BSplineCurve2d toCurve(const Handle(Geom2d_BSplineCurve) & c) {
 // parameter is what every face of the edge shares. Lines, Beziers and B-splines convert
 // exactly; conics would be reparameterised by an exact conversion, so they are approximated
 // in their own parameter instead (to far below any display or export tolerance).
-Handle(Geom2d_BSplineCurve) pcurveAsBSpline(const Handle(Geom2d_Curve) & curve, double first,
-                                            double last) {
+Handle(Geom2d_BSplineCurve)
+    pcurveAsBSpline(const Handle(Geom2d_Curve) & curve, double first, double last) {
     Handle(Geom2d_Curve) basis = curve;
     while (auto trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(basis))
         basis = trimmed->BasisCurve();
@@ -87,8 +85,8 @@ Handle(Geom2d_BSplineCurve) pcurveAsBSpline(const Handle(Geom2d_Curve) & curve, 
         result = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(basis, first, last));
     } else {
         Handle(Geom2d_TrimmedCurve) piece = new Geom2d_TrimmedCurve(basis, first, last);
-        Geom2dConvert_ApproxCurve approx(piece, 1e-9 * std::max(1.0, piece->Value(first).XY().Modulus()),
-                                         GeomAbs_C2, 200, 9);
+        Geom2dConvert_ApproxCurve approx(
+            piece, 1e-9 * std::max(1.0, piece->Value(first).XY().Modulus()), GeomAbs_C2, 200, 9);
         if (!approx.HasResult()) throw Standard_Failure("a trimming curve could not be converted");
         result = approx.Curve();
     }
@@ -127,7 +125,8 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                     const TopTools_IndexedMapOfShape& edges) {
     TrimLoop loop;
     std::vector<TopoDS_Edge> ordered;
-    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) ordered.push_back(it.Current());
+    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
+        ordered.push_back(it.Current());
     // The wire explorer drops edges of sloppy wires it cannot chain; fall back to file order.
     size_t count = 0;
     for (TopExp_Explorer it(wire, TopAbs_EDGE); it.More(); it.Next()) ++count;
@@ -205,6 +204,9 @@ Model importModel(const TopoDS_Shape& original) {
                 BRepBuilderAPI_NurbsConvert single(originalFace, Standard_False);
                 face = TopoDS::Face(single.Shape());
             }
+            // the converted face comes back FORWARD; the orientation (which side is outside)
+            // is the original face's
+            face.Orientation(originalFace.Orientation());
             model.faces[k - 1] = importFace(face, k, edges);
         } catch (const Standard_Failure& failure) {
             model.faces[k - 1].faceIndex = k;

@@ -54,8 +54,7 @@ TopoDS_Shape readBrep(const std::string& path) {
 
 TopoDS_Shape readShape(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw ModelReadError(path + ": no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) throw ModelReadError(path + ": no such file");
     const std::string ext = lowerExtension(path);
     TopoDS_Shape shape;
     try {
@@ -69,8 +68,8 @@ TopoDS_Shape readShape(const std::string& path) {
             throw ModelReadError(path + ": unknown model format '" + ext +
                                  "' (expected .step, .stp, .iges, .igs, .brep or .brp)");
     } catch (const Standard_Failure& failure) {
-        throw ModelReadError(path + ": OpenCASCADE failed to read it: " +
-                             failure.GetMessageString());
+        throw ModelReadError(path +
+                             ": OpenCASCADE failed to read it: " + failure.GetMessageString());
     }
     if (!hasFaces(shape)) throw ModelReadError(path + ": the model has no faces");
     return shape;

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <TopoDS_Shape.hxx>
 #include <stdexcept>
 #include <string>
-
-#include <TopoDS_Shape.hxx>
 
 namespace nurbslod::occ {
 

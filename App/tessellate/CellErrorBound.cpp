@@ -41,18 +41,18 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode) {
     std::vector<Point3> net(static_cast<size_t>((m + 1) * (n + 1)));
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j)
-            net[i * (n + 1) + j] = mode == ErrorMode::Guaranteed
-                                       ? patch.pole3(i, j)
-                                       : patch.point(static_cast<double>(i) / m,
-                                                     static_cast<double>(j) / n);
+            net[i * (n + 1) + j] =
+                mode == ErrorMode::Guaranteed
+                    ? patch.pole3(i, j)
+                    : patch.point(static_cast<double>(i) / m, static_cast<double>(j) / n);
 
     // the net point farthest from the bilinear patch decides where to split
     double farthest = -1;
     int farI = 0, farJ = 0;
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) {
-            const double d = (net[i * (n + 1) + j] - bilinear(static_cast<double>(i) / m,
-                                                              static_cast<double>(j) / n))
+            const double d = (net[i * (n + 1) + j] -
+                              bilinear(static_cast<double>(i) / m, static_cast<double>(j) / n))
                                  .norm();
             if (d > farthest) farthest = d, farI = i, farJ = j;
         }

@@ -40,7 +40,7 @@ struct BoundaryLoop {
 struct BoundaryCrossing {
     int edge = -1;
     int segment = 0;
-    int use = 0;  // the use (side of a seam) on which the face found it
+    int use = 0;                // the use (side of a seam) on which the face found it
     double lambda = 0;          // position along the edge segment, in the edge's direction
     std::int64_t x = 0, y = 0;  // exact integer position in the face's frame that found it
 };

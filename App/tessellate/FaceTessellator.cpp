@@ -2,12 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -29,7 +26,9 @@ constexpr cInt kScale = cInt(1) << 30;
 // Deep enough for 2^-60 of a face; a face that needs more is broken, and is reported.
 constexpr int kMaxDepth = 60;
 
-std::int64_t keyOf(cInt x, cInt y) { return (x << 32) ^ (y & 0xffffffff); }
+std::int64_t keyOf(cInt x, cInt y) {
+    return (x << 32) ^ (y & 0xffffffff);
+}
 
 struct Rect {
     cInt x0, y0, x1, y1;
@@ -109,7 +108,8 @@ struct BoundaryIndex {
     std::vector<std::vector<int>> buckets;
 
     int bucketOf(cInt c) const {
-        return static_cast<int>(std::clamp<cInt>(c * cellsPerSide / (kScale + 1), 0, cellsPerSide - 1));
+        return static_cast<int>(
+            std::clamp<cInt>(c * cellsPerSide / (kScale + 1), 0, cellsPerSide - 1));
     }
 
     void build(const std::vector<std::vector<IntPoint>>& loops) {
@@ -163,8 +163,9 @@ struct BoundaryIndex {
     }
 };
 
-std::vector<std::vector<IntPoint>> integerLoops(const std::vector<BoundaryLoop>& loops,
-                                                const std::function<IntPoint(const BoundaryPoint&)>& at) {
+std::vector<std::vector<IntPoint>> integerLoops(
+    const std::vector<BoundaryLoop>& loops,
+    const std::function<IntPoint(const BoundaryPoint&)>& at) {
     std::vector<std::vector<IntPoint>> out;
     for (const auto& loop : loops) {
         std::vector<IntPoint> path;
@@ -266,7 +267,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             leaves_.push_back({b});
             leaves_[node.index].children[0] = ia;
             leaves_[node.index].children[1] = ia + 1;
-            stack.push_back({b, node.full, node.full ? Paths{} : node.region, node.depth + 1, ia + 1});
+            stack.push_back(
+                {b, node.full, node.full ? Paths{} : node.region, node.depth + 1, ia + 1});
             stack.push_back({a, node.full, std::move(node.region), node.depth + 1, ia});
         };
         // first cut at Bezier span borders, nearest the middle, in the direction with more
@@ -292,10 +294,14 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const Point2 low = frame_->toParameter(r.x0, r.y0), high = frame_->toParameter(r.x1, r.y1);
         const Point2 middle = 0.5 * (low + high);
         const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
-        auto local = [](double t, double a, double b) { return std::clamp((t - a) / (b - a), 0.0, 1.0); };
-        const BezierPatch piece = patches_.patch(su, sv).restricted(
-            local(low.x(), breaksU[su], breaksU[su + 1]), local(high.x(), breaksU[su], breaksU[su + 1]),
-            local(low.y(), breaksV[sv], breaksV[sv + 1]), local(high.y(), breaksV[sv], breaksV[sv + 1]));
+        auto local = [](double t, double a, double b) {
+            return std::clamp((t - a) / (b - a), 0.0, 1.0);
+        };
+        const BezierPatch piece =
+            patches_.patch(su, sv).restricted(local(low.x(), breaksU[su], breaksU[su + 1]),
+                                              local(high.x(), breaksU[su], breaksU[su + 1]),
+                                              local(low.y(), breaksV[sv], breaksV[sv + 1]),
+                                              local(high.y(), breaksV[sv], breaksV[sv + 1]));
         const CellErrorBound bound = cellErrorBound(piece, mode_);
         const double error = mode_ == ErrorMode::Approximate
                                  ? bound.interior + bound.twist
@@ -313,7 +319,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         int direction = bound.splitDirection;
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
-        const cInt at = std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
+        const cInt at =
+            std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
         split(direction, at);
     }
 }
@@ -335,7 +342,8 @@ struct CornerLines {
     }
     bool isCorner(const IntPoint& p) const {
         auto it = onVertical.find(p.X);
-        return it != onVertical.end() && std::binary_search(it->second.begin(), it->second.end(), p.Y);
+        return it != onVertical.end() &&
+               std::binary_search(it->second.begin(), it->second.end(), p.Y);
     }
     // Points strictly between a and b on a common vertical or horizontal line, in order a -> b.
     void between(const IntPoint& a, const IntPoint& b, Path& out) const {
@@ -344,7 +352,8 @@ struct CornerLines {
             if (it == onVertical.end()) return;
             const auto& ys = it->second;
             if (a.Y < b.Y) {
-                for (auto y = std::upper_bound(ys.begin(), ys.end(), a.Y); y != ys.end() && *y < b.Y; ++y)
+                for (auto y = std::upper_bound(ys.begin(), ys.end(), a.Y);
+                     y != ys.end() && *y < b.Y; ++y)
                     out.push_back({a.X, *y});
             } else {
                 auto y = std::lower_bound(ys.begin(), ys.end(), a.Y);
@@ -359,7 +368,8 @@ struct CornerLines {
             if (it == onHorizontal.end()) return;
             const auto& xs = it->second;
             if (a.X < b.X) {
-                for (auto x = std::upper_bound(xs.begin(), xs.end(), a.X); x != xs.end() && *x < b.X; ++x)
+                for (auto x = std::upper_bound(xs.begin(), xs.end(), a.X);
+                     x != xs.end() && *x < b.X; ++x)
                     out.push_back({*x, a.Y});
             } else {
                 auto x = std::lower_bound(xs.begin(), xs.end(), a.X);
@@ -387,7 +397,8 @@ struct CornerLines {
 };
 
 // The polygons with holes of a leaf: each entry is rings[0] = outer, rings[1..] = holes.
-std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full, const CornerLines& lines) {
+std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
+                                  const CornerLines& lines) {
     std::vector<Paths> out;
     if (full) {
         out.push_back({lines.withHangingPoints(r.path(), r)});
@@ -398,13 +409,15 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
     clipper.AddPaths(region, ClipperLib::ptSubject, true);
     clipper.AddPath(r.path(), ClipperLib::ptClip, true);
     ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero,
+                    ClipperLib::pftNonZero);
     std::vector<const ClipperLib::PolyNode*> outers;
     for (const ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext())
         if (!node->IsHole()) outers.push_back(node);
     for (const auto* outer : outers) {
         Paths rings{lines.withHangingPoints(outer->Contour, r)};
-        for (const auto* hole : outer->Childs) rings.push_back(lines.withHangingPoints(hole->Contour, r));
+        for (const auto* hole : outer->Childs)
+            rings.push_back(lines.withHangingPoints(hole->Contour, r));
         out.push_back(std::move(rings));
     }
     return out;
@@ -412,8 +425,9 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
 
 }  // namespace
 
-void FaceTessellator::forEachLeaf(const ClipperLib::Paths& region,
-                                  const std::function<void(const Leaf&, const Paths&)>& visit) const {
+void FaceTessellator::forEachLeaf(
+    const ClipperLib::Paths& region,
+    const std::function<void(const Leaf&, const Paths&)>& visit) const {
     // The region cut down the tree node by node: each cut sees only its parent's piece, so the
     // whole walk costs about the boundary's size times the tree's depth.
     std::vector<std::pair<int, Paths>> stack;
@@ -441,10 +455,10 @@ CornerLines cornerLinesOf(const std::vector<Rect>& cells,
                           const std::vector<std::vector<IntPoint>>& loopPoints) {
     CornerLines lines;
     for (const auto& cell : cells)
-            for (const IntPoint& c : cell.path()) {
-                lines.onVertical[c.X].push_back(c.Y);
-                lines.onHorizontal[c.Y].push_back(c.X);
-            }
+        for (const IntPoint& c : cell.path()) {
+            lines.onVertical[c.X].push_back(c.Y);
+            lines.onHorizontal[c.Y].push_back(c.X);
+        }
     for (const auto& loop : loopPoints)
         for (const IntPoint& p : loop) {
             lines.onVertical[p.X].push_back(p.Y);
@@ -505,7 +519,8 @@ void splitNeedles(FaceMesh& mesh) {
         removed.push_back(0);
         for (const std::size_t index : {j, mesh.triangles.size() - 1})
             for (int k = 0; k < 3; ++k)
-                triangleOfEdge[{mesh.triangles[index][k], mesh.triangles[index][(k + 1) % 3]}] = index;
+                triangleOfEdge[{mesh.triangles[index][k], mesh.triangles[index][(k + 1) % 3]}] =
+                    index;
     }
     std::size_t out = 0;
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
@@ -515,7 +530,8 @@ void splitNeedles(FaceMesh& mesh) {
 
 }  // namespace
 
-std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<BoundaryLoop>& loops) {
+std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
+    const std::vector<BoundaryLoop>& loops) {
     if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
     setFrame(loops);
     const Paths region = regionOf(loops);
@@ -523,7 +539,6 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<B
     for (const auto& p : region) area += ClipperLib::Area(p);
     if (!(std::abs(area) > 0)) throw std::runtime_error("the trimming loops enclose no area");
     buildKdTree(region);
-
 
     const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
         return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
@@ -551,7 +566,8 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(const std::vector<B
                     const BoundarySegmentOrigin& origin = loops[s.loop].origins[s.index];
                     if (origin.edge < 0) continue;
                     // t runs along the loop; the edge may run the other way
-                    crossings.push_back({origin.edge, origin.segment, origin.use, origin.forward ? t : 1 - t, p.X, p.Y});
+                    crossings.push_back({origin.edge, origin.segment, origin.use,
+                                         origin.forward ? t : 1 - t, p.X, p.Y});
                 }
     });
     return crossings;
@@ -561,23 +577,6 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                                       const std::vector<Point3>& sharedPositions) {
     FaceMesh mesh;
     const Paths region = regionOf(loops);
-    if (std::getenv("NURBSLOD_DEBUG")) {
-        std::fprintf(stderr, "face %d loops", face_.faceIndex);
-        for (const auto& l : loops) std::fprintf(stderr, " %zu", l.points.size());
-        for (const auto& l : loops) {
-            std::set<std::int64_t> distinct;
-            std::set<std::uint32_t> ids;
-            for (const auto& p : l.points) {
-                const auto q = p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
-                distinct.insert(keyOf(q.X, q.Y));
-                ids.insert(p.vertex);
-            }
-            std::fprintf(stderr, " (distinct points %zu ids %zu)", distinct.size(), ids.size());
-        }
-        std::fprintf(stderr, " region");
-        for (const auto& p : region) std::fprintf(stderr, " %zu", p.size());
-        std::fprintf(stderr, "\n");
-    }
 
     const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
         return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
@@ -595,7 +594,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     std::vector<Point2> uvOfVertex;
     std::vector<char> needsPosition;
     auto sharedVertex = [&](std::uint32_t id, const Point2& uv) {
-        auto [it, inserted] = sharedToFace.emplace(id, static_cast<std::uint32_t>(mesh.vertices.size()));
+        auto [it, inserted] =
+            sharedToFace.emplace(id, static_cast<std::uint32_t>(mesh.vertices.size()));
         if (inserted) {
             FaceMesh::Vertex v;
             v.shared = true;
@@ -608,7 +608,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         return it->second;
     };
     auto ownVertex = [&](const IntPoint& p, const Point2& uv, const Point3* position) {
-        auto [it, inserted] = pointToFace.emplace(keyOf(p.X, p.Y), static_cast<std::uint32_t>(mesh.vertices.size()));
+        auto [it, inserted] =
+            pointToFace.emplace(keyOf(p.X, p.Y), static_cast<std::uint32_t>(mesh.vertices.size()));
         if (inserted) {
             FaceMesh::Vertex v;
             if (position) v.position = *position;
@@ -636,7 +637,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             const auto& loop = loops[s.loop];
             const auto& a = loop.points[s.index];
             const auto& b = loop.points[(s.index + 1) % loop.points.size()];
-            const Point3 position = (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
+            const Point3 position =
+                (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
             ++mesh.unmatchedCrossings;
             return ownVertex(p, (1 - t) * a.uv + t * b.uv, &position);
         }
@@ -663,12 +665,6 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                 continue;
             }
             const Triangulation triangulation = triangulatePolygon(integerRings);
-            if (std::getenv("NURBSLOD_DEBUG") && (!triangulation.complete || integerRings.size() > 1)) {
-                std::fprintf(stderr, "face %d leaf rings", face_.faceIndex);
-                for (const auto& ring : integerRings) std::fprintf(stderr, " %zu", ring.size());
-                std::fprintf(stderr, " -> %zu triangles complete %d\n", triangulation.triangles.size(),
-                             int(triangulation.complete));
-            }
             for (const auto& t : triangulation.triangles) {
                 const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
                 // points the boundary shares (a pole, a snapped cut) make zero-area triangles
@@ -678,33 +674,15 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         }
     });
 
-    if (std::getenv("NURBSLOD_DEBUG")) {
-        std::set<std::uint32_t> used;
-        for (const auto& t : mesh.triangles)
-            for (auto i : t) used.insert(i);
-        std::size_t unused = 0, exactUnused = 0;
-        for (const auto& l : loops)
-            for (const auto& p : l.points) {
-                auto it = sharedToFace.find(p.vertex);
-                if (it == sharedToFace.end() || !used.count(it->second)) {
-                    ++unused;
-                    exactUnused += p.exact;
-                }
-            }
-        std::fprintf(stderr, "face %d boundary points unused %zu (exact %zu)\n", face_.faceIndex, unused, exactUnused);
-    }
     // positions and exact normals at every vertex (section 8)
     const auto& surface = face_.surface;
     for (size_t i = 0; i < mesh.vertices.size(); ++i) {
         const Point2& uv = uvOfVertex[i];
         if (needsPosition[i]) mesh.vertices[i].position = surface.point(uv.x(), uv.y());
-        if (std::getenv("NURBSLOD_DEBUG") && mesh.vertices[i].position.norm() > 1e4)
-            std::fprintf(stderr, "face %d far vertex shared %d uv %.17g %.17g\n", face_.faceIndex,
-                         int(mesh.vertices[i].shared), uv.x(), uv.y());
         Vector3 normal = surface.normal(uv.x(), uv.y());
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
     }
-    if (!std::getenv("NO_SPLIT")) splitNeedles(mesh);
+    splitNeedles(mesh);
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
     mesh.toleranceReached = toleranceReached_;

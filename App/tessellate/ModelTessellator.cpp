@@ -7,8 +7,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -32,8 +30,8 @@ struct EdgeUse {
 // plus the points that faces' cell sides added inside segments.
 struct EdgePolyline {
     std::vector<double> params;
-    std::vector<std::vector<Point2>> uv;                // [use][k]
-    std::vector<std::vector<std::uint32_t>> vertices;   // [use][k]
+    std::vector<std::vector<Point2>> uv;               // [use][k]
+    std::vector<std::vector<std::uint32_t>> vertices;  // [use][k]
     struct Inserted {
         double lambda;
         std::vector<std::uint32_t> vertices;  // per use
@@ -50,7 +48,8 @@ Point3 centroid(const std::vector<Point3>& points) {
 double spread(const std::vector<Point3>& points) {
     double d = 0;
     for (size_t i = 0; i < points.size(); ++i)
-        for (size_t j = i + 1; j < points.size(); ++j) d = std::max(d, (points[i] - points[j]).norm());
+        for (size_t j = i + 1; j < points.size(); ++j)
+            d = std::max(d, (points[i] - points[j]).norm());
     return d;
 }
 
@@ -63,8 +62,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<tbb::global_control> threads;
     if (options.threads > 0)
-        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                        options.threads);
+        threads = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, options.threads);
     const ErrorBudget budget = ErrorBudget::of(options.tolerance, options.mode);
     const int faceCount = static_cast<int>(model.faces.size());
 
@@ -86,8 +85,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
         for (const auto& loop : face.loops)
             for (const auto& curve : loop.curves)
-                if (auto p = curve.pcurve.problem(); p && failure[f].empty()) failure[f] = *p;
-                else if (failure[f].empty() && (curve.edge < 0 || curve.edge >= int(model.edges.size())))
+                if (auto p = curve.pcurve.problem(); p && failure[f].empty())
+                    failure[f] = *p;
+                else if (failure[f].empty() &&
+                         (curve.edge < 0 || curve.edge >= int(model.edges.size())))
                     failure[f] = "a trimming curve names no edge of the model";
     }
 
@@ -115,9 +116,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::vector<CurveOnSurface> curves;
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
         auto& poly = polylines[e];
-        poly.params = model.edges[e].degenerated
-                          ? std::vector<double>{0.0, 1.0}
-                          : discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
+        poly.params = model.edges[e].degenerated ? std::vector<double>{0.0, 1.0}
+                                                 : discretizeEdge(curves, budget.lineApproximation,
+                                                                  budget.lineSimplification);
         poly.uv.resize(curves.size());
         for (size_t k = 0; k < curves.size(); ++k)
             for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
@@ -136,7 +137,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const Point3 start = curve.point(0.0), end = curve.point(1.0);
         const Point3& first = model.vertices[edge.firstVertex].point;
         const Point3& last = model.vertices[edge.lastVertex].point;
-        if ((start - last).norm() + (end - first).norm() < (start - first).norm() + (end - last).norm())
+        if ((start - last).norm() + (end - first).norm() <
+            (start - first).norm() + (end - last).norm())
             std::swap(endVertices[e].first, endVertices[e].second);
     }
     std::vector<Point3> positions;
@@ -149,8 +151,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             const auto [firstVertex, lastVertex] = endVertices[e];
             for (size_t k = 0; k < uses[e].size(); ++k) {
                 const auto curve = curveOnSurface(uses[e][k]);
-                if (firstVertex >= 0) endpoints[firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
-                if (lastVertex >= 0) endpoints[lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
+                if (firstVertex >= 0)
+                    endpoints[firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
+                if (lastVertex >= 0)
+                    endpoints[lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
             }
         }
         for (auto& [vertex, list] : endpoints) {
@@ -170,7 +174,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     }
     auto brepVertexId = [&](int vertex, int face) -> std::uint32_t {
-        if (auto it = vertexOfBrepVertex.find({vertex, -1}); it != vertexOfBrepVertex.end()) return it->second;
+        if (auto it = vertexOfBrepVertex.find({vertex, -1}); it != vertexOfBrepVertex.end())
+            return it->second;
         return vertexOfBrepVertex.at({vertex, face});
     };
     for (size_t e = 0; e < model.edges.size(); ++e) {
@@ -194,13 +199,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             std::vector<Point3> points;
             for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
-            if (std::getenv("NURBSLOD_DEBUG"))
-                for (size_t u = 0; u < points.size(); ++u)
-                    if (points[u].norm() > 1e4) {
-                        const Point2 uv = curves[u].uv(poly.params[k]);
-                        std::fprintf(stderr, "edge %zu use face %d s %.6g uv %.9g %.9g far\n", e,
-                                     uses[e][u].face + 1, poly.params[k], uv.x(), uv.y());
-                    }
             if (spread(points) <= budget.shareGap) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
@@ -222,7 +220,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // exact integer points of cuts, by (edge, use, shared vertex): the two sides of a seam are
     // two uses of one edge in one face and share the vertex, but not the (u, v) point
-    std::map<std::tuple<int, int, std::uint32_t>, std::pair<std::int64_t, std::int64_t>> exactPoints;
+    std::map<std::tuple<int, int, std::uint32_t>, std::pair<std::int64_t, std::int64_t>>
+        exactPoints;
 
     // a face's boundary polygons from the shared polylines
     auto boundaryOf = [&](int f) {
@@ -244,8 +243,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     segmentAfter.push_back(static_cast<int>(k));
                     if (k + 1 == n) break;
                     for (const auto& ins : poly.inserted[k]) {
-                        BoundaryPoint p{(1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
-                                        ins.vertices[u]};
+                        BoundaryPoint p{
+                            (1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
+                            ins.vertices[u]};
                         if (auto it = exactPoints.find({e, u, p.vertex}); it != exactPoints.end()) {
                             p.exact = true;
                             p.x = it->second.first;
@@ -265,12 +265,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 if (!loop.points.empty() && loop.points.back().vertex == points.front().vertex &&
                     points.size() > 1) {
                     startIndex = 1;
-                    loop.origins.back() = {e, forward ? segmentAfter[0] : segmentAfter[1], forward, u};
+                    loop.origins.back() = {e, forward ? segmentAfter[0] : segmentAfter[1], forward,
+                                           u};
                 }
                 for (size_t i = startIndex; i < points.size(); ++i) {
                     loop.points.push_back(points[i]);
                     // segment from this point to the next one of the curve
-                    int segment = forward ? segmentAfter[i] : (i + 1 < points.size() ? segmentAfter[i + 1] : 0);
+                    int segment = forward ? segmentAfter[i]
+                                          : (i + 1 < points.size() ? segmentAfter[i + 1] : 0);
                     loop.origins.push_back({e, segment, forward, u});
                 }
                 loop.origins.back() = {-1, 0, true, 0};  // to the next curve, until joined
@@ -286,8 +288,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return loops;
     };
 
-    if (std::getenv("NURBSLOD_TIMING"))
-        std::fprintf(stderr, "edges %.3f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     // 3. first pass over faces: kd-trees and the cuts of cell sides with the boundary
     std::vector<std::unique_ptr<FaceTessellator>> tessellators(faceCount);
     std::vector<std::vector<BoundaryCrossing>> crossings(faceCount);
@@ -295,12 +295,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
-            const auto t0 = std::chrono::steady_clock::now();
-            tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
+            tessellators[f] =
+                std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
-            if (std::getenv("NURBSLOD_TIMING"))
-                std::fprintf(stderr, "face %d first pass %.3f s\n", f + 1,
-                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         } catch (const std::exception& e) {
             failure[f] = e.what();
             tessellators[f].reset();
@@ -309,9 +306,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // 4. every cut joins its edge's polyline, for both faces of the edge
     {
-        std::map<std::pair<int, int>, std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>> cuts;
+        std::map<std::pair<int, int>,
+                 std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>>
+            cuts;
         for (int f = 0; f < faceCount; ++f)
-            for (const auto& c : crossings[f]) cuts[{c.edge, c.segment}].push_back({c.lambda, c.use, c.x, c.y});
+            for (const auto& c : crossings[f])
+                cuts[{c.edge, c.segment}].push_back({c.lambda, c.use, c.x, c.y});
         for (auto& [key, list] : cuts) {
             auto [e, k] = key;
             auto& poly = polylines[e];
@@ -322,13 +322,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 sharedEnds &= poly.vertices[u][k] == poly.vertices[0][k] &&
                               poly.vertices[u][k + 1] == poly.vertices[0][k + 1];
             double lastLambda = -1;
-            if (std::getenv("NURBSLOD_DEBUG2")) {
-                std::fprintf(stderr, "edge %d seg %d uses", e, k);
-                for (auto& u : uses[e]) std::fprintf(stderr, " %d", u.face + 1);
-                std::fprintf(stderr, " cuts");
-                for (auto& [lambda, use, x, y] : list) std::fprintf(stderr, " (%.4f by use %d)", lambda, use);
-                std::fprintf(stderr, "\n");
-            }
             for (auto& [lambda, use, x, y] : list) {
                 if (lambda <= 0 || lambda >= 1) continue;
                 if (lambda - lastLambda > 1e-9) {
@@ -357,7 +350,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (tessellators[f]) {
             try {
                 faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions);
-                if (faceMeshes[f].triangles.empty()) failure[f] = "no triangles inside the trimming loops";
+                if (faceMeshes[f].triangles.empty())
+                    failure[f] = "no triangles inside the trimming loops";
             } catch (const std::exception& e) {
                 failure[f] = e.what();
             }
@@ -366,16 +360,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::size_t n = ++done;
         if (options.progress) options.progress(n, static_cast<std::size_t>(faceCount));
     });
-
-    if (std::getenv("NURBSLOD_DEBUG"))
-        for (int f = 0; f < faceCount; ++f) {
-            std::size_t gaps = 0, segs = 0;
-            if (failure[f].empty())
-                for (const auto& loop : boundaryOf(f))
-                    for (const auto& o : loop.origins) gaps += o.edge < 0, ++segs;
-            std::fprintf(stderr, "face %d crossings %zu unmatched %zu cells %zu gaps %zu/%zu\n", f + 1,
-                         crossings[f].size(), faceMeshes[f].unmatchedCrossings, faceMeshes[f].cells, gaps, segs);
-        }
 
     // 6. one mesh: shared positions first, then each face's own points, in face order
     Mesh& mesh = result.mesh;
@@ -402,7 +386,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
         for (const auto& t : fm.triangles) {
             mesh.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
-            mesh.triangleNormals.push_back({normalBase + t[0], normalBase + t[1], normalBase + t[2]});
+            mesh.triangleNormals.push_back(
+                {normalBase + t[0], normalBase + t[1], normalBase + t[2]});
             mesh.triangleFaces.push_back(f + 1);
             for (auto i : t) used[global[i]] = 1;
         }
@@ -454,7 +439,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     mesh.triangleNormals.resize(out);
     mesh.triangleFaces.resize(out);
 
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

@@ -10,8 +10,8 @@ namespace nurbslod {
 // over the edge parameter range [first, last]. The edge parameter is the one the 3D edge
 // curve and every pcurve of the edge share, so an edge discretised once in t is shared.
 struct TrimCurve {
-    int edge = -1;             // index into Model::edges
-    BSplineCurve2d pcurve;     // in the surface's (u, v) plane
+    int edge = -1;          // index into Model::edges
+    BSplineCurve2d pcurve;  // in the surface's (u, v) plane
     double first = 0, last = 1;
     bool reversed = false;     // the loop runs from `last` to `first`
     bool seam = false;         // the edge bounds the face on both sides (a closed surface)

@@ -19,7 +19,9 @@ TEST(KnotVector, FindsSpansAndBreakpoints) {
 
 TEST(KnotVector, NamesWhatIsWrong) {
     EXPECT_NE(KnotVector(2, {0, 0, 0, 1, 1, 1}).problem(4)->find("do not fit"), std::string::npos);
-    EXPECT_NE(KnotVector(1, {0, 0, 0.7, 0.5, 1, 1}).problem(4)->find("decrease"), std::string::npos);
-    EXPECT_NE(KnotVector(1, {0, 0, std::nan(""), 1, 1}).problem(3)->find("not finite"), std::string::npos);
+    EXPECT_NE(KnotVector(1, {0, 0, 0.7, 0.5, 1, 1}).problem(4)->find("decrease"),
+              std::string::npos);
+    EXPECT_NE(KnotVector(1, {0, 0, std::nan(""), 1, 1}).problem(3)->find("not finite"),
+              std::string::npos);
     EXPECT_NE(KnotVector(1, {1, 1, 1, 1}).problem(2)->find("empty"), std::string::npos);
 }
