@@ -163,18 +163,6 @@ struct BoundaryIndex {
     }
 };
 
-std::vector<std::vector<IntPoint>> integerLoops(
-    const std::vector<BoundaryLoop>& loops,
-    const std::function<IntPoint(const BoundaryPoint&)>& at) {
-    std::vector<std::vector<IntPoint>> out;
-    for (const auto& loop : loops) {
-        std::vector<IntPoint> path;
-        for (const auto& p : loop.points) path.push_back(at(p));
-        out.push_back(std::move(path));
-    }
-    return out;
-}
-
 }  // namespace
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
@@ -212,14 +200,24 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
     }
 }
 
+std::vector<std::vector<IntPoint>> FaceTessellator::integerBoundary(
+    const std::vector<BoundaryLoop>& loops) const {
+    std::vector<std::vector<IntPoint>> out;
+    for (const auto& loop : loops) {
+        std::vector<IntPoint> path;
+        for (const auto& p : loop.points)
+            path.push_back(p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv));
+        out.push_back(std::move(path));
+    }
+    return out;
+}
+
 Paths FaceTessellator::regionOf(const std::vector<BoundaryLoop>& loops) const {
     // The union by the even-odd rule is the repair of section 5.1: loops that cross themselves
     // or each other become simple polygons, outer ones counter-clockwise, holes clockwise.
     ClipperLib::Clipper clipper;
     clipper.PreserveCollinear(true);
-    for (const auto& loop : integerLoops(loops, [&](const BoundaryPoint& p) {
-             return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
-         }))
+    for (const auto& loop : integerBoundary(loops))
         if (loop.size() >= 3) clipper.AddPath(loop, ClipperLib::ptSubject, true);
     Paths region;
     clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
@@ -467,6 +465,17 @@ CornerLines cornerLinesOf(const std::vector<Rect>& cells,
     lines.finish();
     return lines;
 }
+
+// The boundary as both passes look it up: the points that must stay in cell sides, and the
+// segment under a point the clipper made.
+struct BoundaryLookup {
+    CornerLines lines;
+    BoundaryIndex index;
+    BoundaryLookup(const std::vector<std::vector<IntPoint>>& loops, const std::vector<Rect>& cells)
+        : lines(cornerLinesOf(cells, loops)) {
+        index.build(loops);
+    }
+};
 }  // namespace
 
 namespace {
@@ -540,15 +549,12 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     if (!(std::abs(area) > 0)) throw std::runtime_error("the trimming loops enclose no area");
     buildKdTree(region);
 
-    const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
-        return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
-    });
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)
         if (leaf.leaf) cells.push_back(leaf.rect);
-    const CornerLines lines = cornerLinesOf(cells, loopPoints);
-    BoundaryIndex index;
-    index.build(loopPoints);
+    const BoundaryLookup lookup(integerBoundary(loops), cells);
+    const CornerLines& lines = lookup.lines;
+    const BoundaryIndex& index = lookup.index;
 
     std::vector<BoundaryCrossing> crossings;
     std::unordered_map<std::int64_t, bool> seen;
@@ -578,15 +584,12 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     FaceMesh mesh;
     const Paths region = regionOf(loops);
 
-    const auto loopPoints = integerLoops(loops, [&](const BoundaryPoint& p) {
-        return p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
-    });
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)
         if (leaf.leaf) cells.push_back(leaf.rect);
-    const CornerLines lines = cornerLinesOf(cells, loopPoints);
-    BoundaryIndex index;
-    index.build(loopPoints);
+    const BoundaryLookup lookup(integerBoundary(loops), cells);
+    const CornerLines& lines = lookup.lines;
+    const BoundaryIndex& index = lookup.index;
 
     // face vertices: shared ones by shared id, the face's own by integer point
     std::unordered_map<std::uint32_t, std::uint32_t> sharedToFace;

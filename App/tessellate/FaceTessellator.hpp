@@ -37,6 +37,8 @@ private:
     struct Leaf;
     struct Frame;
     void setFrame(const std::vector<BoundaryLoop>& loops);
+    std::vector<std::vector<ClipperLib::IntPoint>> integerBoundary(
+        const std::vector<BoundaryLoop>& loops) const;
     ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
     void buildKdTree(const ClipperLib::Paths& region);
     void forEachLeaf(const ClipperLib::Paths& region,
