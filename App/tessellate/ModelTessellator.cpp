@@ -116,9 +116,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::vector<CurveOnSurface> curves;
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
         auto& poly = polylines[e];
-        poly.params = model.edges[e].degenerated ? std::vector<double>{0.0, 1.0}
-                                                 : discretizeEdge(curves, budget.lineApproximation,
-                                                                  budget.lineSimplification);
+        // A degenerated edge (a pole) is discretised like any other: on a true pole its points
+        // coincide and their triangles vanish; on a sloppy one (a "pole" row spread over the
+        // edge tolerance) they follow the surface instead of collapsing onto one vertex.
+        poly.params = discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
         poly.uv.resize(curves.size());
         for (size_t k = 0; k < curves.size(); ++k)
             for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
@@ -181,7 +182,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     for (size_t e = 0; e < model.edges.size(); ++e) {
         if (uses[e].empty()) continue;
         auto& poly = polylines[e];
-        const ModelEdge& edge = model.edges[e];
         const auto [firstVertex, lastVertex] = endVertices[e];
         const size_t n = poly.params.size();
         poly.vertices.assign(uses[e].size(), std::vector<std::uint32_t>(n));
@@ -190,9 +190,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
         for (size_t k = 0; k < n; ++k) {
             const bool first = k == 0, last = k + 1 == n;
-            if ((first && firstVertex >= 0) || (last && lastVertex >= 0) ||
-                (edge.degenerated && firstVertex >= 0)) {
-                const int vertex = (last && !edge.degenerated) ? lastVertex : firstVertex;
+            if ((first && firstVertex >= 0) || (last && lastVertex >= 0)) {
+                const int vertex = last ? lastVertex : firstVertex;
                 for (size_t u = 0; u < uses[e].size(); ++u)
                     poly.vertices[u][k] = brepVertexId(vertex, uses[e][u].face);
                 continue;
