@@ -21,7 +21,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -230,15 +229,6 @@ int runTessellate(const TessellateArguments& arguments) {
     } catch (const std::runtime_error& error) {
         throw BadInput(error.what());
     }
-
-    // faces the importer could not convert, if the tessellator did not list them itself
-    std::set<int> listed;
-    for (const FaceFailure& failure : result.failures) listed.insert(failure.face);
-    for (const TrimmedSurface& face : model.faces)
-        if (!face.error.empty() && !listed.count(face.faceIndex))
-            result.failures.push_back({face.faceIndex, face.error});
-    std::sort(result.failures.begin(), result.failures.end(),
-              [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
     const double totalSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

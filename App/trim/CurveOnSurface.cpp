@@ -5,6 +5,8 @@
 #include <array>
 #include <mutex>
 
+#include "geometry/SegmentDistance.hpp"
+
 namespace nurbslod {
 
 namespace {
@@ -40,14 +42,6 @@ const Eigen::MatrixXd& interpolationMatrix(int n) {
         }
     });
     return matrices[n];
-}
-
-double distanceToSegment(const Point3& p, const Point3& a, const Point3& b) {
-    const Vector3 ab = b - a;
-    const double length2 = ab.squaredNorm();
-    double lambda = length2 > 0 ? (p - a).dot(ab) / length2 : 0.0;
-    lambda = std::clamp(lambda, 0.0, 1.0);
-    return (p - (a + lambda * ab)).norm();
 }
 
 Point3 bezierPoint(const std::vector<Point3>& control, double t) {

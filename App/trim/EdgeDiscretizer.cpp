@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "geometry/SegmentDistance.hpp"
+
 namespace nurbslod {
 
 namespace {
@@ -20,13 +22,6 @@ bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, d
         if (b.bound > eps || b.residual > 0.25 * eps) return false;
     }
     return true;
-}
-
-double distanceToSegment(const Point3& p, const Point3& a, const Point3& b) {
-    const Vector3 ab = b - a;
-    const double length2 = ab.squaredNorm();
-    const double lambda = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return (p - (a + lambda * ab)).norm();
 }
 
 }  // namespace
