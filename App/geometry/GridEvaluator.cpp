@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "geometry/BasisFunctions.hpp"
+#include "geometry/GridBasis.hpp"
 #include "geometry/SurfaceNormal.hpp"
 
 namespace nurbslod {
@@ -18,35 +18,6 @@ namespace nurbslod {
 namespace {
 
 constexpr int kLanes = 4;
-
-// Basis functions and derivatives of one direction, once per grid parameter.
-struct BasisTable {
-    int degree = 0;
-    std::vector<double> parameter;  // clamped to the domain
-    std::vector<int> span;
-    std::vector<double> values, derivatives;  // (degree + 1) per parameter
-};
-
-BasisTable makeBasisTable(const KnotVector& knots, std::span<const double> ts, char name) {
-    BasisTable table;
-    table.degree = knots.degree();
-    const int width = table.degree + 1;
-    table.parameter.resize(ts.size());
-    table.span.resize(ts.size());
-    table.values.resize(ts.size() * width);
-    table.derivatives.resize(ts.size() * width);
-    for (size_t k = 0; k < ts.size(); ++k) {
-        if (!std::isfinite(ts[k]))
-            throw std::invalid_argument(std::string("grid parameter ") + name + "[" +
-                                        std::to_string(k) + "] is not finite");
-        const double t = std::clamp(ts[k], knots.first(), knots.last());
-        table.parameter[k] = t;
-        table.span[k] = knots.findSpan(t);
-        basisFunctionsWithDerivative(knots, table.span[k], t, &table.values[k * width],
-                                     &table.derivatives[k * width]);
-    }
-    return table;
-}
 
 // The v basis functions of four consecutive grid columns side by side: column block b covers
 // control-point columns base[b] .. base[b] + width[b] - 1, and coefficient l of lane q sits at
@@ -59,7 +30,7 @@ struct ColumnBlocks {
     std::vector<double> coefficients;
 };
 
-ColumnBlocks makeColumnBlocks(const BasisTable& v) {
+ColumnBlocks makeColumnBlocks(const GridBasis& v) {
     ColumnBlocks blocks;
     const int n = static_cast<int>(v.span.size());
     const int p = v.degree;
@@ -96,7 +67,7 @@ struct GridPlan {
     const BSplineSurface* surface;
     const double* poles;  // structure of arrays, see GridEvaluator::poles_
     int countU, countV;
-    BasisTable u, v;
+    GridBasis u, v;
     ColumnBlocks blocks;
     Point3* points;
     Vector3* normals;
@@ -332,8 +303,8 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
                   poles_.data(),
                   surface_.countU(),
                   surface_.countV(),
-                  makeBasisTable(surface_.knotsU(), us, 'u'),
-                  makeBasisTable(surface_.knotsV(), vs, 'v'),
+                  makeGridBasis(surface_.knotsU(), us, 'u'),
+                  makeGridBasis(surface_.knotsV(), vs, 'v'),
                   {},
                   points,
                   normals};
