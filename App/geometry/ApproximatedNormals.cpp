@@ -65,6 +65,20 @@ Vector3 extrapolate(const Vector3& interiorNormal, const Point3& interior, const
 
 template <NormalWeighting kWeighting>
 void interiorNormals(const Point3* points, int rows, int columns, Vector3* normals) {
+    if constexpr (kWeighting == NormalWeighting::Area) {
+        // the four cross products summed as they are telescope into one: e0 x e1 + e1 x e2 +
+        // e2 x e3 + e3 x e0 = (e0 - e2) x (e1 - e3), the central differences' cross product.
+        // This is why area weighting is the cheapest (section 3): it removes work.
+        for (int i = 1; i + 1 < rows; ++i) {
+            const Point3* row = points + static_cast<size_t>(i) * columns;
+            for (int j = 1; j + 1 < columns; ++j) {
+                const Vector3 n =
+                    (row[j + columns] - row[j - columns]).cross(row[j + 1] - row[j - 1]);
+                normals[static_cast<size_t>(i) * columns + j] = unitOr(n, Vector3(0, 0, 1));
+            }
+        }
+        return;
+    }
     for (int i = 1; i + 1 < rows; ++i) {
         const Point3* row = points + static_cast<size_t>(i) * columns;
         for (int j = 1; j + 1 < columns; ++j) {

@@ -167,17 +167,22 @@ void scalarRow(const GridPlan& plan, int row, double* q, double* qd) {
     _mm256_storeu_pd(out + 8, _mm256_permute2f128_pd(zx, yz, 0x31));
 }
 
+// Four vertices of a row from the row sums (see scalarVertex). For a polynomial surface the
+// weight channel is skipped: its poles are stored divided by their common weight, so w = 1 and
+// the quotient rule reduces to the plain derivatives.
+template <bool kRational>
 [[gnu::target("avx2,fma")]] void avx2Row(const GridPlan& plan, int row, double* q, double* qd) {
     rowSumsAvx2(plan, row, q, qd);
     const int n = plan.countV;
     const int columns = static_cast<int>(plan.v.span.size());
     const size_t rowStart = static_cast<size_t>(row) * columns;
     const bool withNormals = plan.normals != nullptr;
+    const __m256d one = _mm256_set1_pd(1.0);
     for (int block = 0, j0 = 0; j0 < columns; ++block, j0 += kLanes) {
         const int count = std::min(kLanes, columns - j0);
         const int width = plan.blocks.width[block];
         if (width == 0) {
-            for (int q_ = 0; q_ < count; ++q_) scalarVertex(plan, q, qd, row, j0 + q_);
+            for (int lane = 0; lane < count; ++lane) scalarVertex(plan, q, qd, row, j0 + lane);
             continue;
         }
         const int base = plan.blocks.base[block];
@@ -185,55 +190,69 @@ void scalarRow(const GridPlan& plan, int row, double* q, double* qd) {
         const double* dN = N + width * kLanes;
         const double *qx = q + base, *qy = q + n + base, *qz = q + 2 * n + base,
                      *qw = q + 3 * n + base;
-        __m256d sx = _mm256_setzero_pd(), sy = sx, sz = sx, sw = sx;
+        __m256d sx = _mm256_setzero_pd(), sy = sx, sz = sx, sw = one;
         double* pointOut = plan.points[rowStart + j0].data();
         if (!withNormals) {
+            if constexpr (kRational) sw = _mm256_setzero_pd();
             for (int l = 0; l < width; ++l) {
                 const __m256d b = _mm256_loadu_pd(N + l * kLanes);
                 sx = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qx + l), sx);
                 sy = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qy + l), sy);
                 sz = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qz + l), sz);
-                sw = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qw + l), sw);
+                if constexpr (kRational) sw = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qw + l), sw);
             }
-            const __m256d x = _mm256_div_pd(sx, sw), y = _mm256_div_pd(sy, sw),
-                          z = _mm256_div_pd(sz, sw);
+            if constexpr (kRational) {
+                const __m256d inverse = _mm256_div_pd(one, sw);
+                sx = _mm256_mul_pd(sx, inverse);
+                sy = _mm256_mul_pd(sy, inverse);
+                sz = _mm256_mul_pd(sz, inverse);
+            }
             if (count == kLanes) {
-                storeInterleaved(pointOut, x, y, z);
+                storeInterleaved(pointOut, sx, sy, sz);
             } else {
                 alignas(32) double tmp[12];
-                storeInterleaved(tmp, x, y, z);
+                storeInterleaved(tmp, sx, sy, sz);
                 std::copy(tmp, tmp + 3 * count, pointOut);
             }
             continue;
         }
         const double *qdx = qd + base, *qdy = qd + n + base, *qdz = qd + 2 * n + base,
                      *qdw = qd + 3 * n + base;
-        __m256d ux = sx, uy = sx, uz = sx, uw = sx, vx = sx, vy = sx, vz = sx, vw = sx;
+        const __m256d zero = _mm256_setzero_pd();
+        if constexpr (kRational) sw = zero;
+        __m256d ux = zero, uy = zero, uz = zero, uw = zero, vx = zero, vy = zero, vz = zero,
+                vw = zero;
         for (int l = 0; l < width; ++l) {
             const __m256d b = _mm256_loadu_pd(N + l * kLanes);
             const __m256d db = _mm256_loadu_pd(dN + l * kLanes);
             const __m256d px = _mm256_broadcast_sd(qx + l), py = _mm256_broadcast_sd(qy + l),
-                          pz = _mm256_broadcast_sd(qz + l), pw = _mm256_broadcast_sd(qw + l);
+                          pz = _mm256_broadcast_sd(qz + l);
             sx = _mm256_fmadd_pd(b, px, sx);
             sy = _mm256_fmadd_pd(b, py, sy);
             sz = _mm256_fmadd_pd(b, pz, sz);
-            sw = _mm256_fmadd_pd(b, pw, sw);
             vx = _mm256_fmadd_pd(db, px, vx);
             vy = _mm256_fmadd_pd(db, py, vy);
             vz = _mm256_fmadd_pd(db, pz, vz);
-            vw = _mm256_fmadd_pd(db, pw, vw);
             ux = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qdx + l), ux);
             uy = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qdy + l), uy);
             uz = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qdz + l), uz);
-            uw = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qdw + l), uw);
+            if constexpr (kRational) {
+                const __m256d pw = _mm256_broadcast_sd(qw + l);
+                sw = _mm256_fmadd_pd(b, pw, sw);
+                vw = _mm256_fmadd_pd(db, pw, vw);
+                uw = _mm256_fmadd_pd(b, _mm256_broadcast_sd(qdw + l), uw);
+            }
         }
-        // quotient rule without the division: w S_u - w_u S (w^2 times the true derivative)
-        const __m256d dux = _mm256_fmsub_pd(sw, ux, _mm256_mul_pd(uw, sx));
-        const __m256d duy = _mm256_fmsub_pd(sw, uy, _mm256_mul_pd(uw, sy));
-        const __m256d duz = _mm256_fmsub_pd(sw, uz, _mm256_mul_pd(uw, sz));
-        const __m256d dvx = _mm256_fmsub_pd(sw, vx, _mm256_mul_pd(vw, sx));
-        const __m256d dvy = _mm256_fmsub_pd(sw, vy, _mm256_mul_pd(vw, sy));
-        const __m256d dvz = _mm256_fmsub_pd(sw, vz, _mm256_mul_pd(vw, sz));
+        __m256d dux = ux, duy = uy, duz = uz, dvx = vx, dvy = vy, dvz = vz;
+        if constexpr (kRational) {
+            // quotient rule without the division: w S_u - w_u S (w^2 times the true derivative)
+            dux = _mm256_fmsub_pd(sw, ux, _mm256_mul_pd(uw, sx));
+            duy = _mm256_fmsub_pd(sw, uy, _mm256_mul_pd(uw, sy));
+            duz = _mm256_fmsub_pd(sw, uz, _mm256_mul_pd(uw, sz));
+            dvx = _mm256_fmsub_pd(sw, vx, _mm256_mul_pd(vw, sx));
+            dvy = _mm256_fmsub_pd(sw, vy, _mm256_mul_pd(vw, sy));
+            dvz = _mm256_fmsub_pd(sw, vz, _mm256_mul_pd(vw, sz));
+        }
         const __m256d nx = _mm256_fmsub_pd(duy, dvz, _mm256_mul_pd(duz, dvy));
         const __m256d ny = _mm256_fmsub_pd(duz, dvx, _mm256_mul_pd(dux, dvz));
         const __m256d nz = _mm256_fmsub_pd(dux, dvy, _mm256_mul_pd(duy, dvx));
@@ -249,18 +268,23 @@ void scalarRow(const GridPlan& plan, int row, double* q, double* qd) {
         const __m256d ok3 = _mm256_cmp_pd(
             n2, _mm256_mul_pd(_mm256_set1_pd(1e-20), _mm256_mul_pd(a2, b2)), _CMP_GT_OQ);
         const int reliable = _mm256_movemask_pd(_mm256_and_pd(ok1, _mm256_and_pd(ok2, ok3)));
-        const __m256d length = _mm256_sqrt_pd(n2);
-        const __m256d x = _mm256_div_pd(sx, sw), y = _mm256_div_pd(sy, sw),
-                      z = _mm256_div_pd(sz, sw);
-        const __m256d mx = _mm256_div_pd(nx, length), my = _mm256_div_pd(ny, length),
-                      mz = _mm256_div_pd(nz, length);
+        // one division and one square root per four vertices, the rest multiplications
+        const __m256d inverseLength = _mm256_div_pd(one, _mm256_sqrt_pd(n2));
+        if constexpr (kRational) {
+            const __m256d inverse = _mm256_div_pd(one, sw);
+            sx = _mm256_mul_pd(sx, inverse);
+            sy = _mm256_mul_pd(sy, inverse);
+            sz = _mm256_mul_pd(sz, inverse);
+        }
+        const __m256d mx = _mm256_mul_pd(nx, inverseLength), my = _mm256_mul_pd(ny, inverseLength),
+                      mz = _mm256_mul_pd(nz, inverseLength);
         double* normalOut = plan.normals[rowStart + j0].data();
         if (count == kLanes) {
-            storeInterleaved(pointOut, x, y, z);
+            storeInterleaved(pointOut, sx, sy, sz);
             storeInterleaved(normalOut, mx, my, mz);
         } else {
             alignas(32) double tmp[12];
-            storeInterleaved(tmp, x, y, z);
+            storeInterleaved(tmp, sx, sy, sz);
             std::copy(tmp, tmp + 3 * count, pointOut);
             storeInterleaved(tmp, mx, my, mz);
             std::copy(tmp, tmp + 3 * count, normalOut);
@@ -280,10 +304,15 @@ GridEvaluator::GridEvaluator(const BSplineSurface& surface) : surface_(surface) 
     if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
     const int nu = surface.countU(), nv = surface.countV();
     poles_.resize(4 * static_cast<size_t>(nu) * nv);
-    for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < nu; ++i)
-            for (int j = 0; j < nv; ++j)
-                poles_[(static_cast<size_t>(c) * nu + i) * nv + j] = surface.pole(i, j)[c];
+    // a polynomial surface (all weights equal) is stored with weight 1, so that the AVX2 path
+    // can skip the weight channel and the quotient rule
+    rational_ = surface.isRational();
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            HomogeneousPoint3 p = surface.pole(i, j);
+            if (!rational_) p /= p[3];
+            for (int c = 0; c < 4; ++c) poles_[(static_cast<size_t>(c) * nu + i) * nv + j] = p[c];
+        }
     if (avx2Available()) instructionSet_ = InstructionSet::Avx2;
 }
 
@@ -317,13 +346,16 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
         double* q = buffer.data();
         double* qd = q + 4 * plan.countV;
         for (int i = begin; i < end; ++i) {
-            if (avx2)
-                avx2Row(plan, i, q, qd);
+            if (avx2 && rational_)
+                avx2Row<true>(plan, i, q, qd);
+            else if (avx2)
+                avx2Row<false>(plan, i, q, qd);
             else
                 scalarRow(plan, i, q, qd);
         }
     };
-    if (threads <= 1) {
+    // a small grid is done before threads would have started
+    if (threads <= 1 || us.size() * vs.size() < 16384) {
         runRows(0, rows);
         return;
     }

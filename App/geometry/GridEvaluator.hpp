@@ -58,6 +58,7 @@ private:
     // Control points as structure of arrays: component c of pole (i, j) at
     // poles_[(c * countU + i) * countV + j], so that the row sums run over contiguous memory.
     std::vector<double> poles_;
+    bool rational_ = false;
     InstructionSet instructionSet_ = InstructionSet::Scalar;
 };
 
