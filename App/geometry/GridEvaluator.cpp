@@ -101,13 +101,6 @@ template <bool kDerivatives>
     }
 }
 
-void rowSumsGeneric(const GridPlan& plan, int row, double* q, double* qd) {
-    if (plan.normals)
-        rowSumsBody<true>(plan, row, q, qd);
-    else
-        rowSumsBody<false>(plan, row, q, qd);
-}
-
 [[gnu::target("avx2,fma")]] void rowSumsAvx2(const GridPlan& plan, int row, double* q, double* qd) {
     if (plan.normals)
         rowSumsBody<true>(plan, row, q, qd);
@@ -149,10 +142,48 @@ void scalarVertex(const GridPlan& plan, const double* q, const double* qd, int r
             : plan.surface->normal(plan.u.parameter[row], plan.v.parameter[column]);
 }
 
-void scalarRow(const GridPlan& plan, int row, double* q, double* qd) {
-    rowSumsGeneric(plan, row, q, qd);
-    const int columns = static_cast<int>(plan.v.span.size());
-    for (int j = 0; j < columns; ++j) scalarVertex(plan, q, qd, row, j);
+// The scalar path (the paper's optimized direct evaluation): row sums as homogeneous points,
+// then per vertex (pv + 1) terms for each of S, S_u, S_v, four components at a time.
+void scalarRow(const GridPlan& plan, int row, HomogeneousPoint3* Q, HomogeneousPoint3* Qd) {
+    const BSplineSurface& surface = *plan.surface;
+    const int pu = plan.u.degree, pv = plan.v.degree, n = plan.countV;
+    const int first = plan.u.span[row] - pu;
+    const double* Nu = plan.u.valuesAt(row);
+    const double* dNu = plan.u.derivativesAt(row);
+    for (int j = 0; j < n; ++j) {
+        Q[j] = Nu[0] * surface.pole(first, j);
+        if (plan.normals) Qd[j] = dNu[0] * surface.pole(first, j);
+    }
+    for (int k = 1; k <= pu; ++k)
+        for (int j = 0; j < n; ++j) {
+            Q[j] += Nu[k] * surface.pole(first + k, j);
+            if (plan.normals) Qd[j] += dNu[k] * surface.pole(first + k, j);
+        }
+    const size_t columns = plan.v.span.size();
+    const size_t rowStart = static_cast<size_t>(row) * columns;
+    for (size_t j = 0; j < columns; ++j) {
+        const int base = plan.v.span[j] - pv;
+        const double* Nv = plan.v.valuesAt(j);
+        HomogeneousPoint3 S = HomogeneousPoint3::Zero();
+        for (int l = 0; l <= pv; ++l) S += Nv[l] * Q[base + l];
+        const double w = S[3];
+        plan.points[rowStart + j] = S.head<3>() / w;
+        if (!plan.normals) continue;
+        const double* dNv = plan.v.derivativesAt(j);
+        HomogeneousPoint3 Su = HomogeneousPoint3::Zero(), Sv = Su;
+        for (int l = 0; l <= pv; ++l) {
+            Su += Nv[l] * Qd[base + l];
+            Sv += dNv[l] * Q[base + l];
+        }
+        // quotient rule without the division: w^2 times the true derivatives
+        const Vector3 du = w * Su.head<3>() - Su[3] * S.head<3>();
+        const Vector3 dv = w * Sv.head<3>() - Sv[3] * S.head<3>();
+        const Vector3 normal = du.cross(dv);
+        plan.normals[rowStart + j] =
+            isReliableNormal(du, dv, normal)
+                ? Vector3(normal / std::sqrt(normal.squaredNorm()))
+                : surface.normal(plan.u.parameter[row], plan.v.parameter[j]);
+    }
 }
 
 // x = (x0..x3), y, z to x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3: four Point3 in a row.
@@ -342,16 +373,17 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
     const int rows = static_cast<int>(us.size());
     const size_t scratch = 8 * static_cast<size_t>(plan.countV);
     auto runRows = [&](int begin, int end) {
-        std::vector<double> buffer(scratch);
+        std::vector<double> buffer(avx2 ? scratch : 0);
+        std::vector<HomogeneousPoint3> rowSums(avx2 ? 0 : 2 * plan.countV);
         double* q = buffer.data();
-        double* qd = q + 4 * plan.countV;
+        double* qd = q + (avx2 ? 4 * plan.countV : 0);
         for (int i = begin; i < end; ++i) {
             if (avx2 && rational_)
                 avx2Row<true>(plan, i, q, qd);
             else if (avx2)
                 avx2Row<false>(plan, i, q, qd);
             else
-                scalarRow(plan, i, q, qd);
+                scalarRow(plan, i, rowSums.data(), rowSums.data() + plan.countV);
         }
     };
     // a small grid is done before threads would have started
