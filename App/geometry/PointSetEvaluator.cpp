@@ -5,15 +5,30 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <numeric>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
-#include "geometry/BasisFunctions.hpp"
+#include "geometry/GridBasis.hpp"
 #include "geometry/SurfaceNormal.hpp"
 
 namespace nurbslod {
+
+namespace {
+
+// A cheap hash of a parameter value (Fibonacci hashing of its bits; -0 and +0 alike): the
+// library's byte hash costs more than the evaluation it groups.
+struct ParameterHash {
+    size_t operator()(double t) const {
+        return static_cast<size_t>(
+            (std::bit_cast<std::uint64_t>(t + 0.0) * 0x9E3779B97F4A7C15ull) >> 16);
+    }
+};
+
+}  // namespace
 
 PointSetEvaluator::PointSetEvaluator(const BSplineSurface& surface) : surface_(surface) {
     if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
@@ -24,40 +39,49 @@ void PointSetEvaluator::evaluate(std::span<const Point2> uv, Point3* points, Vec
     const KnotVector& ku = surface_.knotsU();
     const KnotVector& kv = surface_.knotsV();
     const int pu = ku.degree(), pv = kv.degree();
-    // clamped parameters, as BSplineSurface clamps them
-    std::vector<Point2> clamped(uv.size());
+    // Distinct u and v values (a tessellation repeats them a lot): basis functions once per
+    // distinct value, and pairs grouped by their u. Hashing instead of sorting: the groups
+    // need no order, and a sort of the pairs would cost more than their evaluation.
+    std::unordered_map<double, int, ParameterHash> uIndex, vIndex;
+    uIndex.reserve(1024);
+    vIndex.reserve(1024);
+    std::vector<double> distinctU, distinctV;
+    std::vector<int> pairU(uv.size()), pairV(uv.size());
     for (size_t k = 0; k < uv.size(); ++k) {
         if (!std::isfinite(uv[k].x()) || !std::isfinite(uv[k].y()))
             throw std::invalid_argument("parameter pair " + std::to_string(k) + " is not finite");
-        clamped[k] = Point2(std::clamp(uv[k].x(), ku.first(), ku.last()),
-                            std::clamp(uv[k].y(), kv.first(), kv.last()));
+        auto [u, newU] = uIndex.try_emplace(uv[k].x(), static_cast<int>(distinctU.size()));
+        if (newU) distinctU.push_back(uv[k].x());
+        pairU[k] = u->second;
+        auto [v, newV] = vIndex.try_emplace(uv[k].y(), static_cast<int>(distinctV.size()));
+        if (newV) distinctV.push_back(uv[k].y());
+        pairV[k] = v->second;
     }
-    // pairs sorted by u: each run of equal u is one group sharing its row sums
-    std::vector<size_t> order(uv.size());
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return clamped[a].x() < clamped[b].x(); });
-    std::vector<size_t> groupStart;
-    for (size_t k = 0; k < order.size(); ++k)
-        if (k == 0 || clamped[order[k]].x() != clamped[order[k - 1]].x()) groupStart.push_back(k);
-    groupStart.push_back(order.size());
+    // clamped to the domain as BSplineSurface clamps
+    const GridBasis basisU = makeGridBasis(ku, distinctU, 'u');
+    const GridBasis basisV = makeGridBasis(kv, distinctV, 'v');
+    // pairs by u group (a counting sort)
+    std::vector<size_t> groupStart(distinctU.size() + 1, 0), order(uv.size());
+    for (int g : pairU) ++groupStart[g + 1];
+    for (size_t g = 0; g < distinctU.size(); ++g) groupStart[g + 1] += groupStart[g];
+    {
+        std::vector<size_t> next(groupStart.begin(), groupStart.end() - 1);
+        for (size_t k = 0; k < uv.size(); ++k) order[next[pairU[k]]++] = k;
+    }
 
     auto runGroups = [&](size_t firstGroup, size_t lastGroup) {
         std::vector<HomogeneousPoint3> rowSums, rowDerivativeSums;
-        std::vector<int> spans;
         for (size_t g = firstGroup; g < lastGroup; ++g) {
             const size_t begin = groupStart[g], end = groupStart[g + 1];
-            const double u = clamped[order[begin]].x();
-            const int su = ku.findSpan(u);
-            double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1];
-            basisFunctionsWithDerivative(ku, su, u, Nu, dNu);
+            const int su = basisU.span[g];
+            const double* Nu = basisU.valuesAt(g);
+            const double* dNu = basisU.derivativesAt(g);
             // the control-point columns this group's v values reach
-            spans.resize(end - begin);
             int lo = surface_.countV(), hi = 0;
             for (size_t k = begin; k < end; ++k) {
-                spans[k - begin] = kv.findSpan(clamped[order[k]].y());
-                lo = std::min(lo, spans[k - begin] - pv);
-                hi = std::max(hi, spans[k - begin]);
+                const int sv = basisV.span[pairV[order[k]]];
+                lo = std::min(lo, sv - pv);
+                hi = std::max(hi, sv);
             }
             const int width = hi - lo + 1;
             rowSums.assign(width, HomogeneousPoint3::Zero());
@@ -70,17 +94,18 @@ void PointSetEvaluator::evaluate(std::span<const Point2> uv, Point3* points, Vec
                 }
             for (size_t k = begin; k < end; ++k) {
                 const size_t index = order[k];
-                const double v = clamped[index].y();
-                const int sv = spans[k - begin];
-                double Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
-                basisFunctionsWithDerivative(kv, sv, v, Nv, dNv);
+                const int vi = pairV[index];
+                const int sv = basisV.span[vi];
+                const double* Nv = basisV.valuesAt(vi);
                 const HomogeneousPoint3* Q = &rowSums[sv - pv - lo];
-                const HomogeneousPoint3* Qd = &rowDerivativeSums[sv - pv - lo];
-                HomogeneousPoint3 S = HomogeneousPoint3::Zero(), Su = S, Sv = S;
+                HomogeneousPoint3 S = HomogeneousPoint3::Zero();
                 for (int l = 0; l <= pv; ++l) S += Nv[l] * Q[l];
                 const double w = S[3];
                 points[index] = S.head<3>() / w;
                 if (!normals) continue;
+                const double* dNv = basisV.derivativesAt(vi);
+                const HomogeneousPoint3* Qd = &rowDerivativeSums[sv - pv - lo];
+                HomogeneousPoint3 Su = HomogeneousPoint3::Zero(), Sv = Su;
                 for (int l = 0; l <= pv; ++l) {
                     Su += Nv[l] * Qd[l];
                     Sv += dNv[l] * Q[l];
@@ -88,11 +113,12 @@ void PointSetEvaluator::evaluate(std::span<const Point2> uv, Point3* points, Vec
                 // quotient rule without the division (w^2 times the true derivatives)
                 const Vector3 du = w * Su.head<3>() - Su[3] * S.head<3>();
                 const Vector3 dv = w * Sv.head<3>() - Sv[3] * S.head<3>();
-                normals[index] = unitNormal(du, dv, surface_, u, v);
+                normals[index] =
+                    unitNormal(du, dv, surface_, basisU.parameter[g], basisV.parameter[vi]);
             }
         }
     };
-    const size_t groups = groupStart.size() - 1;
+    const size_t groups = distinctU.size();
     if (threads <= 1 || uv.size() < 4096) {
         runGroups(0, groups);
         return;

@@ -16,8 +16,9 @@ namespace nurbslod {
 // offer it: pairs are grouped by equal u (the corners of a kd-tree's cells share their u
 // values), and each group computes the u basis functions and the row sums
 // Q_j = sum_k N_k(u) P_kj, Q'_j = sum_k N'_k(u) P_kj once, over just the control-point columns
-// its v values need; each pair then costs its v basis functions and (pv+1) terms per sum. A
-// lone pair costs what one direct evaluation does. Groups are spread over threads with oneTBB.
+// its v values need; basis functions are computed once per distinct v as well, so each pair
+// costs (pv+1) terms per sum. A lone pair costs what one direct evaluation does. Groups are
+// spread over threads with oneTBB.
 class PointSetEvaluator {
 public:
     // Throws std::invalid_argument naming the problem if the surface cannot be evaluated.
