@@ -220,7 +220,7 @@ std::vector<Row> table5For(const Benchmark& b, long vertices, int threads, doubl
                                                    normals.data());
                     }
                 },
-                minRuns, budget);
+                minRuns, budget, /*wall=*/true);
         rows.push_back(row);
     }
     for (bool adaptor : {false, true}) {

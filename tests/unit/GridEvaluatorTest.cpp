@@ -139,6 +139,26 @@ TEST(GridEvaluator, VectorScalarThreadedAndPointwiseAgree) {
     }
 }
 
+// A grid large enough to be spread over threads gives the single-threaded results bit for bit.
+TEST(GridEvaluator, ThreadsGiveTheSameResults) {
+    std::mt19937 random(13);
+    for (bool rational : {false, true}) {
+        const BSplineSurface surface = randomSurface(3, 4, rational, random, 9, 7);
+        const auto us = uniformParameters(-0.5, 1.5, 211), vs = uniformParameters(-0.5, 1.5, 203);
+        for (auto set :
+             {GridEvaluator::InstructionSet::Scalar, GridEvaluator::InstructionSet::Avx2}) {
+            GridEvaluator evaluator(surface);
+            evaluator.setInstructionSet(set);
+            std::vector<Point3> p1, p2;
+            std::vector<Vector3> n1, n2;
+            evaluator.evaluate(us, vs, p1, &n1, 1);
+            evaluator.evaluate(us, vs, p2, &n2, 3);
+            ASSERT_EQ(p1, p2);
+            ASSERT_EQ(n1, n2);
+        }
+    }
+}
+
 // At the poles of a sphere du vanishes; the evaluator gives BSplineSurface's pole-safe normal.
 TEST(GridEvaluator, PoleNormalIsTheSurfaceNormal) {
     BRepBuilderAPI_NurbsConvert converter(BRepPrimAPI_MakeSphere(2.0).Shape(), Standard_False);

@@ -26,7 +26,7 @@ TEST(PointSetEvaluator, MatchesBSplineSurfacePointByPoint) {
             std::vector<Point2> uv;
             std::vector<double> sharedU(40);
             for (double& u : sharedU) u = parameter(random);
-            for (int k = 0; k < 5000; ++k)
+            for (int k = 0; k < 6000; ++k)
                 uv.emplace_back(k % 3 ? sharedU[k % sharedU.size()] : parameter(random),
                                 parameter(random));
             const PointSetEvaluator evaluator(surface);
