@@ -2,6 +2,7 @@
 evaluation method against the surface degree, from evaluation_benchmark's --json output.
 
 Usage: python3 docs/plot_evaluation.py RESULTS.json docs/evaluation_ns_per_vertex.png
+       python3 docs/plot_evaluation.py --tables RESULTS.json   (the report's Markdown tables)
 """
 import json
 import sys
@@ -47,5 +48,75 @@ def main(results_path, image_path):
     fig.savefig(image_path, dpi=110)
 
 
+
+
+def markdown_tables(results_path):
+    """Markdown tables of docs/evaluation.md from the same JSON (python3 plot_evaluation.py
+    --tables RESULTS.json)."""
+    with open(results_path) as f:
+        results = json.load(f)
+    rows = results["table5"]
+    by = {}
+    for r in rows:
+        by.setdefault((r["model"], r["vertices"]), {})[r["method"]] = r
+    keys = list(dict.fromkeys((r["model"], r["vertices"]) for r in rows))
+    smallest = {}
+    for model, n in keys:
+        smallest[model] = min(smallest.get(model, n), n)
+
+    def cell(model, n, method, mode, scale):
+        r = by[(model, n)].get(method)
+        if r is None:
+            return "-"
+        value = r[mode + " seconds"]
+        return ("%.3f" % (value * 1e3)) if scale == "ms" else ("%.1f" % (value * 1e9 / n))
+
+    columns = [
+        ("optimized direct, exact", "optimized direct (coherent)", "exact normals"),
+        ("optimized direct, points", "optimized direct (coherent)", "points"),
+        ("optimized direct, approx.", "optimized direct (coherent)", "approx. normals"),
+        ("two-stage CdB, exact", "two-stage Cox-de Boor", "exact normals"),
+        ("de Casteljau, exact", "de Casteljau", "exact normals"),
+        ("mod. de Casteljau, exact", "modified de Casteljau", "exact normals"),
+        ("Horner, exact", "Horner power basis", "exact normals"),
+        ("Horner, approx.", "Horner power basis", "approx. normals"),
+        ("grid AVX2, exact", "grid evaluator AVX2", "exact normals"),
+        ("grid AVX2, points", "grid evaluator AVX2", "points"),
+        ("grid AVX2, approx.", "grid evaluator AVX2", "approx. normals"),
+        ("OCCT D1, exact", "OCCT Geom_BSplineSurface D0/D1", "exact normals"),
+        ("OCCT cache, exact", "OCCT GeomAdaptor (BSplSLib cache)", "exact normals"),
+    ]
+    for title, scale, pick in (
+        ("milliseconds, the paper's vertex counts", "ms", lambda m, n: n == smallest[m]),
+        ("ns per vertex, 1M vertices", "ns", lambda m, n: n >= 999000),
+        ("ns per vertex, the paper's vertex counts", "ns", lambda m, n: n == smallest[m]),
+    ):
+        print("\n%s\n" % title)
+        print("| model | vertices | " + " | ".join(c[0] for c in columns) + " |")
+        print("|---|---:|" + "---:|" * len(columns))
+        for model, n in keys:
+            if not pick(model, n):
+                continue
+            print("| %s | %d | " % (model, n) +
+                  " | ".join(cell(model, n, c[1], c[2], scale) for c in columns) + " |")
+    print("\nthreaded (wall time), ns per vertex, exact normals\n")
+    for model, n in keys:
+        for method, r in by[(model, n)].items():
+            if "threads" in method:
+                print("| %s | %d | %s | %.1f | %.1f |" % (
+                    model, n, method, r["points seconds"] * 1e9 / n,
+                    r["exact normals seconds"] * 1e9 / n))
+    print("\nscattered\n")
+    for r in results.get("scattered", []):
+        n = r["vertices"]
+        print("| %s | %d | %.1f | %.1f | %.1f | %.1fx |" % (
+            r["model"], n, r["bsplinesurface_seconds"] * 1e9 / n,
+            r["point_set_evaluator_seconds"] * 1e9 / n, r["occt_adaptor_seconds"] * 1e9 / n,
+            r["bsplinesurface_seconds"] / r["point_set_evaluator_seconds"]))
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if sys.argv[1] == "--tables":
+        markdown_tables(sys.argv[2])
+    else:
+        main(sys.argv[1], sys.argv[2])

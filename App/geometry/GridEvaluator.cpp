@@ -122,7 +122,8 @@ void scalarVertex(const GridPlan& plan, const double* q, const double* qd, int r
         for (int l = 0; l <= p; ++l) S[c] += N[l] * qc[l];
     }
     const size_t index = static_cast<size_t>(row) * plan.v.span.size() + column;
-    plan.points[index] = Point3(S[0] / S[3], S[1] / S[3], S[2] / S[3]);
+    const double inverseW = 1.0 / S[3];
+    plan.points[index] = Point3(S[0] * inverseW, S[1] * inverseW, S[2] * inverseW);
     if (!plan.normals) return;
     for (int c = 0; c < 4; ++c) {
         const double* qc = q + c * n + first;
@@ -138,7 +139,7 @@ void scalarVertex(const GridPlan& plan, const double* q, const double* qd, int r
     const Vector3 normal = du.cross(dv);
     plan.normals[index] =
         isReliableNormal(du, dv, normal)
-            ? Vector3(normal / std::sqrt(normal.squaredNorm()))
+            ? Vector3(normal * (1.0 / std::sqrt(normal.squaredNorm())))
             : plan.surface->normal(plan.u.parameter[row], plan.v.parameter[column]);
 }
 
@@ -167,7 +168,7 @@ void scalarRow(const GridPlan& plan, int row, HomogeneousPoint3* Q, HomogeneousP
         HomogeneousPoint3 S = HomogeneousPoint3::Zero();
         for (int l = 0; l <= pv; ++l) S += Nv[l] * Q[base + l];
         const double w = S[3];
-        plan.points[rowStart + j] = S.head<3>() / w;
+        plan.points[rowStart + j] = S.head<3>() * (1.0 / w);
         if (!plan.normals) continue;
         const double* dNv = plan.v.derivativesAt(j);
         HomogeneousPoint3 Su = HomogeneousPoint3::Zero(), Sv = Su;
@@ -181,7 +182,7 @@ void scalarRow(const GridPlan& plan, int row, HomogeneousPoint3* Q, HomogeneousP
         const Vector3 normal = du.cross(dv);
         plan.normals[rowStart + j] =
             isReliableNormal(du, dv, normal)
-                ? Vector3(normal / std::sqrt(normal.squaredNorm()))
+                ? Vector3(normal * (1.0 / std::sqrt(normal.squaredNorm())))
                 : surface.normal(plan.u.parameter[row], plan.v.parameter[j]);
     }
 }

@@ -101,7 +101,7 @@ void PointSetEvaluator::evaluate(std::span<const Point2> uv, Point3* points, Vec
                 HomogeneousPoint3 S = HomogeneousPoint3::Zero();
                 for (int l = 0; l <= pv; ++l) S += Nv[l] * Q[l];
                 const double w = S[3];
-                points[index] = S.head<3>() / w;
+                points[index] = S.head<3>() * (1.0 / w);
                 if (!normals) continue;
                 const double* dNv = basisV.derivativesAt(vi);
                 const HomogeneousPoint3* Qd = &rowDerivativeSums[sv - pv - lo];

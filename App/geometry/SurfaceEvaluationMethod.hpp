@@ -28,7 +28,7 @@ inline void finishVertex(const HomogeneousPoint3& S, const HomogeneousPoint3& Su
                          const HomogeneousPoint3& Sv, const BSplineSurface& surface, double u,
                          double v, Point3& point, Vector3* normal) {
     const double w = S[3];
-    point = S.head<3>() / w;
+    point = S.head<3>() * (1.0 / w);
     if (!normal) return;
     const Vector3 du = w * Su.head<3>() - Su[3] * S.head<3>();
     const Vector3 dv = w * Sv.head<3>() - Sv[3] * S.head<3>();
