@@ -74,7 +74,8 @@ struct GridPlan {
 };
 
 // Row sums Q_j = sum_k N_k(u) P_(s-p+k, j) (and Q'_j with N'_k) for every column j, component
-// by component: q[c * countV + j]. Written once and compiled for both instruction sets.
+// by component: q[c * countV + j] (the AVX2 path's layout). Inlined into a target("avx2,fma")
+// function, so that the compiler vectorises the column loops with AVX2.
 template <bool kDerivatives>
 [[gnu::always_inline]] inline void rowSumsBody(const GridPlan& plan, int row, double* q,
                                                double* qd) {
@@ -108,7 +109,8 @@ template <bool kDerivatives>
         rowSumsBody<false>(plan, row, q, qd);
 }
 
-// One vertex from the row sums: S = sum_l N_l(v) Q_(s-p+l), S_u = sum N_l Q'_.., S_v = sum N'_l
+// One vertex from the AVX2 path's row sums, for a block whose columns lie too far apart to be
+// padded into one: S = sum_l N_l(v) Q_(s-p+l), S_u = sum N_l Q'_.., S_v = sum N'_l
 // Q_..; the point is S/w and the normal the direction of (w S_u - w_u S) x (w S_v - w_v S),
 // which is w^4 times du x dv by the quotient rule.
 void scalarVertex(const GridPlan& plan, const double* q, const double* qd, int row, int column) {
