@@ -94,7 +94,7 @@ void interiorNormals(const Point3* points, int rows, int columns, Vector3* norma
 }  // namespace
 
 void approximateGridNormals(const Point3* points, int rows, int columns, NormalWeighting weighting,
-                            Vector3* normals) {
+                            Vector3* normals, BoundaryExtrapolation extrapolation) {
     if (rows < 3 || columns < 3)
         throw std::invalid_argument("approximated normals need a grid of at least 3 x 3 points");
     switch (weighting) {
@@ -112,17 +112,24 @@ void approximateGridNormals(const Point3* points, int rows, int columns, NormalW
             break;
     }
     auto at = [columns](int i, int j) { return static_cast<size_t>(i) * columns + j; };
+    // boundary vertex b from the interior vertices one (near) and two (far) steps inside
+    auto boundaryNormal = [&](size_t b, size_t near, size_t far, bool linear) {
+        if (linear) return unitOr(2 * normals[near] - normals[far], normals[near]);
+        return extrapolate(normals[near], points[near], points[b]);
+    };
+    const bool linearRows = extrapolation == BoundaryExtrapolation::Linear && columns >= 4;
+    const bool linearColumns = extrapolation == BoundaryExtrapolation::Linear && rows >= 4;
     // first and last column of each interior row, along the row's iso-parametric line
     for (int i = 1; i + 1 < rows; ++i) {
-        normals[at(i, 0)] = extrapolate(normals[at(i, 1)], points[at(i, 1)], points[at(i, 0)]);
-        normals[at(i, columns - 1)] = extrapolate(
-            normals[at(i, columns - 2)], points[at(i, columns - 2)], points[at(i, columns - 1)]);
+        normals[at(i, 0)] = boundaryNormal(at(i, 0), at(i, 1), at(i, 2), linearRows);
+        normals[at(i, columns - 1)] =
+            boundaryNormal(at(i, columns - 1), at(i, columns - 2), at(i, columns - 3), linearRows);
     }
     // first and last row, corners included, along the columns
     for (int j = 0; j < columns; ++j) {
-        normals[at(0, j)] = extrapolate(normals[at(1, j)], points[at(1, j)], points[at(0, j)]);
+        normals[at(0, j)] = boundaryNormal(at(0, j), at(1, j), at(2, j), linearColumns);
         normals[at(rows - 1, j)] =
-            extrapolate(normals[at(rows - 2, j)], points[at(rows - 2, j)], points[at(rows - 1, j)]);
+            boundaryNormal(at(rows - 1, j), at(rows - 2, j), at(rows - 3, j), linearColumns);
     }
 }
 

@@ -295,7 +295,8 @@ std::vector<std::vector<double>> deviationTable(const BSplineSurface& surface,
 
 // Table 1: the two surfaces' approximated normals (area weighting) on their shared edge.
 std::vector<std::pair<double, double>> sharedEdgeDeviation(int continuity,
-                                                           const std::vector<long>& counts) {
+                                                           const std::vector<long>& counts,
+                                                           BoundaryExtrapolation extrapolation) {
     const auto pair = adjacentSurfaces(continuity);
     std::vector<std::pair<double, double>> out;
     for (long count : counts) {
@@ -305,8 +306,8 @@ std::vector<std::pair<double, double>> sharedEdgeDeviation(int continuity,
         std::vector<Vector3> n0(size_t(n) * n), n1(size_t(n) * n);
         GridEvaluator(pair[0]).evaluate(us, vs, p0, nullptr);
         GridEvaluator(pair[1]).evaluate(us, vs, p1, nullptr);
-        approximateGridNormals(p0.data(), n, n, NormalWeighting::Area, n0.data());
-        approximateGridNormals(p1.data(), n, n, NormalWeighting::Area, n1.data());
+        approximateGridNormals(p0.data(), n, n, NormalWeighting::Area, n0.data(), extrapolation);
+        approximateGridNormals(p1.data(), n, n, NormalWeighting::Area, n1.data(), extrapolation);
         double sum = 0, worst = 0;
         for (int i = 0; i < n; ++i) {
             // last column of the first surface (v = 1) against the first of the second (v = 0)
@@ -610,12 +611,18 @@ int main(int argc, char** argv) {
     std::printf(
         "\nTable 1: angle (degrees) between the approximated normals (area) of two "
         "adjacent surfaces on their shared edge\n");
-    std::printf("%9s | %10s %10s | %10s %10s\n", "vertices", "C1 mean", "C1 max", "C2 mean",
-                "C2 max");
-    const auto c1 = sharedEdgeDeviation(1, counts), c2 = sharedEdgeDeviation(2, counts);
+    std::printf("%9s | %10s %10s | %10s %10s || %10s %10s | %10s %10s\n", "", "paper's",
+                "reflection", "", "", "linear", "(beyond", "the paper)", "");
+    std::printf("%9s | %10s %10s | %10s %10s || %10s %10s | %10s %10s\n", "vertices", "C1 mean",
+                "C1 max", "C2 mean", "C2 max", "C1 mean", "C1 max", "C2 mean", "C2 max");
+    const auto c1 = sharedEdgeDeviation(1, counts, BoundaryExtrapolation::Reflection),
+               c2 = sharedEdgeDeviation(2, counts, BoundaryExtrapolation::Reflection),
+               c1Linear = sharedEdgeDeviation(1, counts, BoundaryExtrapolation::Linear),
+               c2Linear = sharedEdgeDeviation(2, counts, BoundaryExtrapolation::Linear);
     for (size_t k = 0; k < counts.size(); ++k)
-        std::printf("%9ld | %10.4f %10.4f | %10.4f %10.4f\n", counts[k], c1[k].first, c1[k].second,
-                    c2[k].first, c2[k].second);
+        std::printf("%9ld | %10.4f %10.4f | %10.4f %10.4f || %10.4f %10.4f | %10.4f %10.4f\n",
+                    counts[k], c1[k].first, c1[k].second, c2[k].first, c2[k].second,
+                    c1Linear[k].first, c1Linear[k].second, c2Linear[k].first, c2Linear[k].second);
 
     // Beyond the paper: scattered vertices of adaptive subdivisions (what a tessellator has)
     std::printf(
@@ -674,12 +681,15 @@ int main(int argc, char** argv) {
             }
             j << "]";
         }
-        j << "},\n  \"table1_degrees\": {\"C1\": [";
-        for (size_t k = 0; k < counts.size(); ++k)
-            j << (k ? ", " : "") << "[" << c1[k].first << ", " << c1[k].second << "]";
-        j << "], \"C2\": [";
-        for (size_t k = 0; k < counts.size(); ++k)
-            j << (k ? ", " : "") << "[" << c2[k].first << ", " << c2[k].second << "]";
+        j << "},\n  \"table1_degrees\": {";
+        const std::pair<const char*, const std::vector<std::pair<double, double>>*> table1[] = {
+            {"C1", &c1}, {"C2", &c2}, {"C1_linear", &c1Linear}, {"C2_linear", &c2Linear}};
+        for (size_t t = 0; t < std::size(table1); ++t) {
+            j << (t ? "], " : "") << jsonString(table1[t].first) << ": [";
+            for (size_t k = 0; k < counts.size(); ++k)
+                j << (k ? ", " : "") << "[" << (*table1[t].second)[k].first << ", "
+                  << (*table1[t].second)[k].second << "]";
+        }
         j << "]},\n  \"scattered\": [\n";
         for (size_t k = 0; k < scatteredResults.size(); ++k) {
             const auto& r = scatteredResults[k];
