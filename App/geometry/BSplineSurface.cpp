@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "geometry/BasisFunctions.hpp"
 
@@ -92,9 +93,15 @@ Vector3 BSplineSurface::normal(double u, double v) const {
     if (reliable(derivatives(u, v), n)) return n.normalized();
     const double um = 0.5 * (u_.first() + u_.last()), vm = 0.5 * (v_.first() + v_.last());
     for (double step = 1e-6; step <= 0.5; step *= 4) {
-        if (reliable(derivatives(u + step * (um - u), v + step * (vm - v)), n)) return n.normalized();
+        if (reliable(derivatives(u + step * (um - u), v + step * (vm - v)), n))
+            return n.normalized();
     }
     return Vector3(0, 0, 1);
+}
+
+const BSplineSurface& BSplineSurface::validated() const {
+    if (auto why = problem()) throw std::invalid_argument(*why);
+    return *this;
 }
 
 std::optional<std::string> BSplineSurface::problem() const {

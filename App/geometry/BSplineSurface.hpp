@@ -43,6 +43,9 @@ public:
     // Why this surface cannot be evaluated (knots that do not fit, a weight <= 0, a NaN), or
     // nothing if it can.
     std::optional<std::string> problem() const;
+    // This surface, or std::invalid_argument naming its problem: for the evaluators, which
+    // take a surface once and then trust it in their inner loops.
+    const BSplineSurface& validated() const;
 
 private:
     void clampToDomain(double& u, double& v) const;

@@ -1,14 +1,11 @@
 #include "geometry/CoxDeBoorTwoStage.hpp"
 
-#include <stdexcept>
-
 #include "geometry/GridBasis.hpp"
 
 namespace nurbslod {
 
-CoxDeBoorTwoStage::CoxDeBoorTwoStage(const BSplineSurface& surface) : surface_(surface) {
-    if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
-}
+CoxDeBoorTwoStage::CoxDeBoorTwoStage(const BSplineSurface& surface)
+    : surface_(surface.validated()) {}
 
 void CoxDeBoorTwoStage::evaluate(std::span<const double> us, std::span<const double> vs,
                                  Point3* points, Vector3* normals) const {

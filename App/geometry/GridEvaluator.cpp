@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "geometry/GridBasis.hpp"
@@ -334,8 +333,7 @@ template <bool kRational>
 
 }  // namespace
 
-GridEvaluator::GridEvaluator(const BSplineSurface& surface) : surface_(surface) {
-    if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
+GridEvaluator::GridEvaluator(const BSplineSurface& surface) : surface_(surface.validated()) {
     const int nu = surface.countU(), nv = surface.countV();
     poles_.resize(4 * static_cast<size_t>(nu) * nv);
     // a polynomial surface (all weights equal) is stored with weight 1, so that the AVX2 path

@@ -1,18 +1,11 @@
 #include "geometry/HornerPowerBasis.hpp"
 
-#include <stdexcept>
-
 #include "geometry/BasisFunctions.hpp"
 #include "geometry/BezierGridLookup.hpp"
 
 namespace nurbslod {
 
 namespace {
-
-const BSplineSurface& checked(const BSplineSurface& surface) {
-    if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
-    return surface;
-}
 
 double binomial(int n, int k) {
     double b = 1;
@@ -42,7 +35,7 @@ void toPowerBasis(HomogeneousPoint3* pts, int degree, int stride) {
 }  // namespace
 
 HornerPowerBasis::HornerPowerBasis(const BSplineSurface& surface)
-    : surface_(checked(surface)), patches_(surface) {
+    : surface_(surface.validated()), patches_(surface) {
     const int pu = surface_.degreeU(), pv = surface_.degreeV();
     for (int a = 0; a < patches_.spansU(); ++a)
         for (int b = 0; b < patches_.spansV(); ++b) {

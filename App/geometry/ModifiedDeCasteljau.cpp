@@ -1,22 +1,13 @@
 #include "geometry/ModifiedDeCasteljau.hpp"
 
-#include <stdexcept>
-
 #include "geometry/BasisFunctions.hpp"
 #include "geometry/BezierGridLookup.hpp"
 #include "geometry/DeCasteljauReduce.hpp"
 
 namespace nurbslod {
 
-namespace {
-const BSplineSurface& checked(const BSplineSurface& surface) {
-    if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
-    return surface;
-}
-}  // namespace
-
 ModifiedDeCasteljau::ModifiedDeCasteljau(const BSplineSurface& surface)
-    : surface_(checked(surface)), patches_(surface) {}
+    : surface_(surface.validated()), patches_(surface) {}
 
 void ModifiedDeCasteljau::evaluate(std::span<const double> us, std::span<const double> vs,
                                    Point3* points, Vector3* normals) const {

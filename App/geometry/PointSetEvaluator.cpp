@@ -30,9 +30,8 @@ struct ParameterHash {
 
 }  // namespace
 
-PointSetEvaluator::PointSetEvaluator(const BSplineSurface& surface) : surface_(surface) {
-    if (auto problem = surface.problem()) throw std::invalid_argument(*problem);
-}
+PointSetEvaluator::PointSetEvaluator(const BSplineSurface& surface)
+    : surface_(surface.validated()) {}
 
 void PointSetEvaluator::evaluate(std::span<const Point2> uv, Point3* points, Vector3* normals,
                                  int threads) const {
