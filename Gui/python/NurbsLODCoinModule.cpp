@@ -1,0 +1,168 @@
+// The Python module NurbsLODCoin: registers the Coin node SoNurbsLODShape and talks to the
+// nodes that pivy created (FreeCAD's Python side builds the scene graph through pivy).
+//
+// A pivy node crosses as its SWIG pointer: int(node.this) is the address of the C++ node.
+// Its Coin type is checked before the pointer is used, so a wrong object is a TypeError, not
+// a crash. Every C++ failure becomes a Python exception; none escapes into FreeCAD.
+
+#include <Inventor/SoDB.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <Standard_Failure.hxx>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "SoNurbsLODShape.hpp"
+#include "occ/ModelImporter.hpp"
+#include "occ/ShapeReader.hpp"
+
+namespace py = pybind11;
+
+namespace nurbslod::gui::python {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+SoNurbsLODShape* nodeOf(const py::object& node) {
+    if (!py::hasattr(node, "this") || !py::hasattr(node, "getTypeId"))
+        throw py::type_error("NurbsLODCoin: expected a pivy SoNurbsLODShape node");
+    const std::string typeName =
+        node.attr("getTypeId")().attr("getName")().attr("getString")().cast<std::string>();
+    if (typeName != "SoNurbsLODShape")
+        throw py::type_error("NurbsLODCoin: expected an SoNurbsLODShape node, got " + typeName);
+    const auto address = py::int_(node.attr("this")).cast<std::uintptr_t>();
+    auto* shape = reinterpret_cast<SoNurbsLODShape*>(address);
+    if (!shape || !shape->isOfType(SoNurbsLODShape::getClassTypeId()))
+        throw py::type_error("NurbsLODCoin: the node is not an SoNurbsLODShape");
+    return shape;
+}
+
+std::shared_ptr<const Model> importBrep(const std::string& brep) {
+    py::gil_scoped_release release;
+    return std::make_shared<const Model>(occ::importModel(occ::shapeFromBrepString(brep)));
+}
+
+py::list failureList(const FaceLodCache& cache) {
+    py::list list;
+    for (const auto& failure : cache.failures()) {
+        py::dict entry;
+        entry["face"] = failure.face;
+        entry["reason"] = failure.reason;
+        list.append(entry);
+    }
+    return list;
+}
+
+// Gives the node the model of a FreeCAD shape (its BREP text) and makes every face's
+// coarsest level. Returns {faces, faces_failed: [{face, reason}], seconds}.
+py::dict setShape(const py::object& node, const std::string& brep) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    const auto start = Clock::now();
+    std::shared_ptr<const Model> model = importBrep(brep);
+    {
+        py::gil_scoped_release release;
+        shape->setModel(std::move(model));
+    }
+    py::dict out;
+    out["faces"] = shape->cache()->faceCount();
+    out["faces_failed"] = failureList(*shape->cache());
+    out["seconds"] = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+}
+
+py::dict stats(const py::object& node) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    const FrameStats s = shape->stats();
+    py::dict out;
+    out["triangles"] = s.triangles;
+    out["max_screen_error_px"] = s.maxScreenErrorPx;
+    out["last_frame_tessellation_ms"] = s.lastFrameTessellationMs;
+    out["faces_visible"] = s.facesVisible;
+    out["faces_culled"] = s.facesCulled;
+    out["faces_failed"] = s.facesFailed;
+    out["faces_waiting"] = s.facesWaiting;
+    out["pending_jobs"] = s.pendingJobs;
+    out["background_tessellation_ms"] = s.workerMs;
+    out["frames"] = s.frames;
+    out["pixel_error"] = shape->pixelError.getValue();
+    out["frame_budget_ms"] = shape->frameBudget.getValue();
+    out["last_error"] = shape->lastError();
+    if (shape->hasModel()) out["failures"] = failureList(*shape->cache());
+    return out;
+}
+
+// An edit of one face: `brep` holds the new face alone. Only that face is re-tessellated, at
+// the level it showed (or `level`), in this thread; its other levels are dropped. Returns the
+// milliseconds from the call to the new level being ready.
+double replaceFace(const py::object& node, int faceIndex, const std::string& brep, int level) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    if (!shape->hasModel()) throw py::value_error("NurbsLODCoin: the node has no model yet");
+    const auto start = Clock::now();
+    {
+        py::gil_scoped_release release;
+        const Model replacement = occ::importModel(occ::shapeFromBrepString(brep));
+        if (replacement.faces.size() != 1)
+            throw std::invalid_argument("the replacement shape must have exactly one face, not " +
+                                        std::to_string(replacement.faces.size()));
+        if (!replacement.faces.front().error.empty())
+            throw std::invalid_argument("face " + std::to_string(faceIndex) + ": " +
+                                        replacement.faces.front().error);
+        FaceLodCache& cache = *shape->cache();
+        if (level < 0) level = 0;
+        cache.replaceFace(faceIndex - 1, replacement, std::min(level, cache.finestLevel()));
+    }
+    shape->touch();
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+int shownLevel(const py::object& node, int faceIndex) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    if (!shape->hasModel()) return -1;
+    return shape->shownLevel(faceIndex - 1);
+}
+
+void translateFailures() {
+    py::register_exception_translator([](std::exception_ptr error) {
+        try {
+            if (error) std::rethrow_exception(error);
+        } catch (const Standard_Failure& failure) {
+            const std::string message =
+                std::string("NurbsLODCoin: OpenCASCADE failed: ") + failure.GetMessageString();
+            PyErr_SetString(PyExc_RuntimeError, message.c_str());
+        } catch (const occ::ModelReadError& failure) {
+            PyErr_SetString(PyExc_ValueError,
+                            (std::string("NurbsLODCoin: ") + failure.what()).c_str());
+        }
+    });
+}
+
+}  // namespace
+}  // namespace nurbslod::gui::python
+
+PYBIND11_MODULE(NurbsLODCoin, m) {
+    using namespace nurbslod::gui::python;
+    m.doc() =
+        "Coin nodes of NurbsLOD. Importing registers SoNurbsLODShape; create one with\n"
+        "coin.SoType.fromName(coin.SbName('SoNurbsLODShape')).createInstance().";
+    // Outside FreeCAD's GUI nothing has initialised Coin, and Coin crashes uninitialised.
+    if (!SoDB::isInitialized()) SoDB::init();
+    SoNurbsLODShape::initClass();
+    translateFailures();
+
+    m.def("set_shape", &setShape, py::arg("node"), py::arg("brep"),
+          "Gives the node the model of shape.exportBrepToString(); returns {faces, "
+          "faces_failed: [{face, reason}], seconds}.");
+    m.def("stats", &stats, py::arg("node"),
+          "What the node's last frame drew: triangles, max_screen_error_px, "
+          "last_frame_tessellation_ms, faces_visible, faces_culled, faces_failed, "
+          "faces_waiting, pending_jobs, background_tessellation_ms, frames, failures.");
+    m.def("replace_face", &replaceFace, py::arg("node"), py::arg("face"), py::arg("brep"),
+          py::arg("level") = -1,
+          "Replaces face `face` (1-based) by the one face of `brep` and re-tessellates only it; "
+          "returns the milliseconds that took.");
+    m.def("shown_level", &shownLevel, py::arg("node"), py::arg("face"),
+          "The level face `face` (1-based) showed in the last frame, -1 when not drawn.");
+}

@@ -1,0 +1,248 @@
+"""NurbsLODGui: the macro API of the NurbsLOD workbench's display side.
+
+    import NurbsLODGui
+    NurbsLODGui.enable_adaptive_display(obj, pixel_error=0.5)
+    NurbsLODGui.stats(obj)        # what the last frame drew
+    NurbsLODGui.set_overlay(obj, "zebra", stripes=12)
+    NurbsLODGui.move_pole(obj, face_index, i, j, FreeCAD.Vector(...))
+    NurbsLODGui.disable_adaptive_display(obj)
+
+Adaptive display puts an SoNurbsLODShape node (Gui/, module NurbsLODCoin) into the object's
+view provider, next to FreeCAD's face set. The face set stays in the scene graph under an
+invisible draw style: Coin still ray-picks it, so FreeCAD's pre-selection and selection of
+faces ("Face3") work as before, but it is not drawn. Faces that the tessellator cannot
+handle are drawn from FreeCAD's own mesh of them instead, and the report view says which and
+why.
+"""
+
+import math
+
+import FreeCAD
+
+PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+
+# The defaults of the preferences page (Resources/ui/NurbsLODPreferences.ui); a macro's
+# arguments override them.
+DEFAULT_PIXEL_ERROR = 0.5
+DEFAULT_FRAME_BUDGET_MS = 20.0
+
+try:
+    from NurbsLODOverlays import set_overlay  # noqa: F401 (re-exported)
+except ImportError as _overlay_import_error:
+    _OVERLAY_ERROR = str(_overlay_import_error)
+
+    def set_overlay(obj, kind, **options):
+        """Analysis overlays (isophotes, zebra, curvature) are not installed."""
+        raise RuntimeError(
+            "NurbsLOD: the overlays module NurbsLODOverlays cannot be imported ({}); "
+            "set_overlay is not available".format(_OVERLAY_ERROR)
+        )
+
+
+def parameters():
+    """The workbench's parameter group (the preferences page writes it)."""
+    return FreeCAD.ParamGet(PARAMETER_PATH)
+
+
+def default_pixel_error():
+    value = parameters().GetFloat("PixelError", DEFAULT_PIXEL_ERROR)
+    return value if math.isfinite(value) and value > 0 else DEFAULT_PIXEL_ERROR
+
+
+def default_frame_budget_ms():
+    value = parameters().GetFloat("FrameBudgetMs", DEFAULT_FRAME_BUDGET_MS)
+    return value if math.isfinite(value) and value > 0 else DEFAULT_FRAME_BUDGET_MS
+
+
+def _positive(value, name):
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError("NurbsLOD: {} must be a number, got {!r}".format(name, value)) from None
+    if not (math.isfinite(number) and number > 0):
+        raise ValueError("NurbsLOD: {} must be a positive finite number, got {!r}".format(name, value))
+    return number
+
+
+def _key(obj):
+    return (obj.Document.Name, obj.Name)
+
+
+class AdaptiveDisplay:
+    """The nodes that adaptive display added to one object's view provider."""
+
+    def __init__(self, obj, node, groups):
+        self.obj = obj
+        self.node = node
+        self.groups = groups  # [(group, [nodes inserted])]
+        self.failures = []
+
+    def remove(self):
+        for group, inserted in self.groups:
+            for child in inserted:
+                index = group.findChild(child)
+                if index >= 0:
+                    group.removeChild(index)
+        self.groups = []
+
+
+_displays = {}
+
+
+def _coin():
+    from pivy import coin
+
+    import NurbsLODCoin  # registers SoNurbsLODShape
+
+    return coin, NurbsLODCoin
+
+
+def _face_set_groups(view_object):
+    """(group, index of the face set) for every group that holds FreeCAD's face set."""
+    coin, _ = _coin()
+    search = coin.SoSearchAction()
+    search.setType(coin.SoType.fromName(coin.SbName("SoBrepFaceSet")))
+    search.setInterest(coin.SoSearchAction.ALL)
+    search.setSearchingAll(True)
+    search.apply(view_object.RootNode)
+    found = []
+    seen = set()
+    for k in range(search.getPaths().getLength()):
+        path = search.getPaths()[k]
+        group = path.getNodeFromTail(1)
+        address = int(group.this)
+        if address in seen:  # the shaded and flat-lines modes share one group
+            continue
+        seen.add(address)
+        found.append((group, path.getIndexFromTail(0)))
+    return found
+
+
+def _fallback_node(obj, failures):
+    """FreeCAD's own mesh of the faces the tessellator could not handle, not pickable (the
+    face set still answers picks for them)."""
+    coin, _ = _coin()
+    points = []
+    indices = []
+    deviation = max(obj.Shape.BoundBox.DiagonalLength * 1e-3, 1e-6)
+    for failure in failures:
+        face = obj.Shape.Faces[failure["face"] - 1]
+        try:
+            vertices, triangles = face.tessellate(deviation)
+        except Exception as error:  # the face shows nothing, but say so
+            FreeCAD.Console.PrintWarning(
+                "NurbsLOD: {}: FreeCAD cannot mesh face {} either: {}\n".format(
+                    obj.Label, failure["face"], error
+                )
+            )
+            continue
+        base = len(points)
+        points.extend((v.x, v.y, v.z) for v in vertices)
+        for a, b, c in triangles:
+            indices.extend((base + a, base + b, base + c, -1))
+    if not indices:
+        return None
+    separator = coin.SoSeparator()
+    pick_style = coin.SoPickStyle()
+    pick_style.style = coin.SoPickStyle.UNPICKABLE
+    coordinates = coin.SoCoordinate3()
+    coordinates.point.setValues(0, len(points), points)
+    faces = coin.SoIndexedFaceSet()
+    faces.coordIndex.setValues(0, len(indices), indices)
+    for child in (pick_style, coordinates, faces):
+        separator.addChild(child)
+    return separator
+
+
+def report_failures(obj, failures):
+    for failure in failures:
+        FreeCAD.Console.PrintWarning(
+            "NurbsLOD: {}: face {} keeps FreeCAD's display: {}\n".format(
+                obj.Label, failure["face"], failure["reason"]
+            )
+        )
+
+
+def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
+    """Draws obj's faces view-dependently: each face within pixel_error pixels on screen.
+
+    pixel_error and frame_budget_ms default to the preferences (0.5 px, 20 ms). Returns the
+    summary of the import: {faces, faces_failed: [{face, reason}], seconds}. Raises
+    ValueError for an object without faces or a bad argument; the object then keeps
+    FreeCAD's display.
+    """
+    pixel_error = _positive(pixel_error if pixel_error is not None else default_pixel_error(), "pixel_error")
+    frame_budget_ms = _positive(
+        frame_budget_ms if frame_budget_ms is not None else default_frame_budget_ms(), "frame_budget_ms"
+    )
+    if not hasattr(obj, "Shape") or obj.Shape.isNull() or not obj.Shape.Faces:
+        raise ValueError("NurbsLOD: {} has no faces to display".format(getattr(obj, "Label", obj)))
+    if obj.ViewObject is None:
+        raise RuntimeError("NurbsLOD: adaptive display needs the FreeCAD GUI")
+    if _key(obj) in _displays:
+        disable_adaptive_display(obj)
+    coin, NurbsLODCoin = _coin()
+    groups = _face_set_groups(obj.ViewObject)
+    if not groups:
+        raise RuntimeError("NurbsLOD: {} has no face set in its view provider".format(obj.Label))
+    node = coin.SoType.fromName(coin.SbName("SoNurbsLODShape")).createInstance()
+    node.pixelError = pixel_error
+    node.frameBudget = frame_budget_ms
+    summary = NurbsLODCoin.set_shape(node, obj.Shape.exportBrepToString())
+    fallback = _fallback_node(obj, summary["faces_failed"]) if summary["faces_failed"] else None
+    inserted_groups = []
+    for group, index in groups:
+        hide = coin.SoDrawStyle()
+        hide.style = coin.SoDrawStyle.INVISIBLE
+        inserted = [node] + ([fallback] if fallback else []) + [hide]
+        for offset, child in enumerate(inserted):
+            group.insertChild(child, index + offset)
+        inserted_groups.append((group, inserted))
+    display = AdaptiveDisplay(obj, node, inserted_groups)
+    display.failures = summary["faces_failed"]
+    _displays[_key(obj)] = display
+    report_failures(obj, summary["faces_failed"])
+    return summary
+
+
+def disable_adaptive_display(obj):
+    """Gives obj back FreeCAD's own display. Returns False when it was not enabled."""
+    display = _displays.pop(_key(obj), None)
+    if display is None:
+        return False
+    display.remove()
+    return True
+
+
+def is_enabled(obj):
+    return _key(obj) in _displays
+
+
+def node_of(obj):
+    """The SoNurbsLODShape of obj, or None."""
+    display = _displays.get(_key(obj))
+    return display.node if display else None
+
+
+def _display_of(obj):
+    display = _displays.get(_key(obj))
+    if display is None:
+        raise ValueError("NurbsLOD: adaptive display is not enabled for {}".format(obj.Label))
+    return display
+
+
+def stats(obj):
+    """What obj's last frame drew: triangles, max_screen_error_px, last_frame_tessellation_ms,
+    faces_visible, faces_culled, faces_failed, faces_waiting (drawn coarser than wanted while
+    a worker makes the finer level), pending_jobs, background_tessellation_ms, frames."""
+    _, NurbsLODCoin = _coin()
+    return NurbsLODCoin.stats(_display_of(obj).node)
+
+
+def refresh(obj):
+    """Re-reads obj's shape into its node (after a recompute changed it)."""
+    display = _display_of(obj)
+    _, NurbsLODCoin = _coin()
+    summary = NurbsLODCoin.set_shape(display.node, obj.Shape.exportBrepToString())
+    report_failures(obj, summary["faces_failed"])
+    return summary
