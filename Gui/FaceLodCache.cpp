@@ -1,5 +1,6 @@
 #include "FaceLodCache.hpp"
 
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -12,8 +13,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }
 
+namespace {
+int workerThreads() {
+    return std::max(1, tbb::info::default_concurrency() - 1);
+}
+}  // namespace
+
 FaceLodCache::FaceLodCache(std::shared_ptr<const Model> model)
-    : model_(std::move(model)), faces_(model_->faces.size()) {
+    : model_(std::move(model)), faces_(model_->faces.size()), workers_(workerThreads(), 0) {
     if (!(std::isfinite(model_->boundingBoxDiagonal) && model_->boundingBoxDiagonal > 0))
         throw std::invalid_argument("the model has an empty or invalid bounding box");
     finestLevel_ =
@@ -34,8 +41,10 @@ FaceLodCache::FaceLodCache(std::shared_ptr<const Model> model)
 }
 
 FaceLodCache::~FaceLodCache() {
+    // Queued jobs see the flag and return at once; a running one finishes its face.
     cancelled_ = true;
-    workers_.wait();
+    std::unique_lock lock(finishedMutex_);
+    finishedChanged_.wait(lock, [this] { return pending_.load() == 0; });
 }
 
 std::vector<FaceLodCache::Failure> FaceLodCache::failures() const {
@@ -81,7 +90,7 @@ void FaceLodCache::request(int face, int level) {
     const int generation = state.generation;
     const double tolerance = levelTolerance(level);
     std::shared_ptr<const Model> model = model_;
-    workers_.run([this, model, face, level, generation, tolerance] {
+    workers_.enqueue([this, model, face, level, generation, tolerance] {
         Finished finished{face, level, generation, {}};
         if (cancelled_) {
             finished.result.failure = "cancelled";
@@ -91,11 +100,11 @@ void FaceLodCache::request(int face, int level) {
             workerMicroseconds_ +=
                 std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start).count();
         }
-        {
-            std::lock_guard lock(finishedMutex_);
-            finished_.push_back(std::move(finished));
-            --pending_;
-        }
+        // notified under the lock: the destructor may free the condition variable as soon as
+        // it sees pending_ reach 0
+        std::lock_guard lock(finishedMutex_);
+        finished_.push_back(std::move(finished));
+        --pending_;
         finishedChanged_.notify_all();
     });
 }

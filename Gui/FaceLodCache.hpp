@@ -1,6 +1,6 @@
 #pragma once
 
-#include <tbb/task_group.h>
+#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
@@ -23,6 +23,7 @@ namespace nurbslod::gui {
 // them, so a frame never sees a half-made level.
 //
 // All members except the workers' are used from one thread (the one that renders).
+// Workers run in their own arena with one thread fewer than the cores (at least one).
 class FaceLodCache {
 public:
     // Levels finer than this fraction of the model's size are not made: float vertex
@@ -99,7 +100,9 @@ private:
     std::atomic<int> pending_{0};
     std::atomic<bool> cancelled_{false};
     std::atomic<long long> workerMicroseconds_{0};
-    tbb::task_group workers_;
+    // The workers' own arena, one thread short of the cores: the rendering thread keeps a
+    // core to itself, so a frame is not slowed down by the levels it asked for.
+    tbb::task_arena workers_;
 };
 
 }  // namespace nurbslod::gui

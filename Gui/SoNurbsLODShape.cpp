@@ -55,6 +55,8 @@ SoNurbsLODShape::SoNurbsLODShape() {
     SO_NODE_CONSTRUCTOR(SoNurbsLODShape);
     SO_NODE_ADD_FIELD(pixelError, (0.5f));
     SO_NODE_ADD_FIELD(frameBudget, (20.0f));
+    SO_NODE_ADD_FIELD(hiddenFaces, (0));
+    hiddenFaces.setNum(0);
     redrawSensor_ = new SoTimerSensor(&SoNurbsLODShape::redrawCheck, this);
     redrawSensor_->setInterval(SbTime(0.03));
 }
@@ -117,9 +119,11 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     SoCacheElement::invalidate(state);
 
     const auto frameStart = Clock::now();
-    // 95% of the budget for waiting: waking up and collecting take the rest
+    // Waiting for workers may use a quarter of the budget: on a loaded machine the rendering
+    // thread wakes up late (10 ms measured with the cores busy), and the budget bounds the
+    // whole frame's LOD work, not only the wait.
     const auto deadline = frameStart + std::chrono::microseconds(static_cast<long long>(
-                                           std::max(0.0f, frameBudget.getValue()) * 950.0f));
+                                           std::max(0.0f, frameBudget.getValue()) * 250.0f));
     const SbViewVolume& viewVolume = SoViewVolumeElement::get(state);
     const SbViewportRegion& viewport = SoViewportRegionElement::get(state);
     const SbMatrix& modelMatrix = SoModelMatrixElement::get(state);
@@ -135,6 +139,11 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
 
     cache_->collectFinished();
     const int faceCount = cache_->faceCount();
+    std::vector<char> hidden(static_cast<std::size_t>(faceCount), 0);
+    for (int k = 0; k < hiddenFaces.getNum(); ++k) {
+        const int face = hiddenFaces[k] - 1;
+        if (face >= 0 && face < faceCount) hidden[static_cast<std::size_t>(face)] = 1;
+    }
     // World size of one pixel at each visible face (or -1 for a culled face).
     std::vector<double> pixelSize(static_cast<std::size_t>(faceCount), -1);
     struct Request {
@@ -144,6 +153,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     std::vector<Request> requests;
     nurbslod::gui::FrameStats frame;
     frame.frames = stats_.frames + 1;
+    frame.faceTriangles.assign(static_cast<std::size_t>(faceCount), 0);
     for (int f = 0; f < faceCount; ++f) {
         int level = -1;
         const FaceLod* coarsest = cache_->bestCached(f, 0, &level);
@@ -186,6 +196,8 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     std::sort(requests.begin(), requests.end(),
               [](const Request& a, const Request& b) { return a.priority > b.priority; });
     for (const Request& r : requests) cache_->request(r.face, r.level);
+    frame.selectionMs =
+        std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
     // Give the workers what is left of the frame budget: a level that is quick to make is
     // shown in this frame instead of the next one.
     while (cache_->pendingJobs() > 0 && Clock::now() < deadline) {
@@ -208,7 +220,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     glEnableClientState(GL_NORMAL_ARRAY);
     for (int f = 0; f < faceCount; ++f) {
         const double pixel = pixelSize[static_cast<std::size_t>(f)];
-        if (pixel < 0) {
+        if (pixel < 0 || hidden[static_cast<std::size_t>(f)]) {
             shownLevel_[static_cast<std::size_t>(f)] = -1;
             continue;
         }
@@ -222,6 +234,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             pixel > 0 ? lod->tolerance * scale / pixel : std::numeric_limits<double>::infinity();
         frame.maxScreenErrorPx = std::max(frame.maxScreenErrorPx, errorPx);
         frame.triangles += lod->triangleCount();
+        frame.faceTriangles[static_cast<std::size_t>(f)] = lod->triangleCount();
         glVertexPointer(3, GL_FLOAT, 0, lod->positions.data());
         glNormalPointer(GL_FLOAT, 0, lod->normals.data());
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(lod->indices.size()), GL_UNSIGNED_INT,

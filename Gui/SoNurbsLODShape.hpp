@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/nodes/SoShape.h>
 
@@ -19,6 +20,7 @@ struct FrameStats {
     std::size_t triangles = 0;
     double maxScreenErrorPx = 0;         // of the drawn levels, over the visible faces
     double lastFrameTessellationMs = 0;  // time the frame spent on LOD work (selection, waiting)
+    double selectionMs = 0;              // of which choosing levels and culling
     int facesVisible = 0;
     int facesCulled = 0;
     int facesFailed = 0;
@@ -26,6 +28,7 @@ struct FrameStats {
     int pendingJobs = 0;
     double workerMs = 0;  // all background tessellation so far, summed over threads
     long long frames = 0;
+    std::vector<std::size_t> faceTriangles;  // per face, drawn in the last frame (0: not drawn)
 };
 
 }  // namespace nurbslod::gui
@@ -54,6 +57,9 @@ public:
 
     SoSFFloat pixelError;   // allowed screen-space error in pixels (0.5)
     SoSFFloat frameBudget;  // milliseconds a frame may spend on LOD work (20)
+    // 1-based faces this node does not draw: the selected and pre-selected ones, which
+    // FreeCAD's face set draws highlighted (both drawn would fight in the depth buffer).
+    SoMFInt32 hiddenFaces;
 
     // Replaces the model; throws std::invalid_argument for a model without faces.
     void setModel(std::shared_ptr<const nurbslod::Model> model);

@@ -74,7 +74,11 @@ class AdaptiveDisplay:
     def __init__(self, obj, node, groups):
         self.obj = obj
         self.node = node
-        self.groups = groups  # [(group, [nodes inserted])]
+        # [(group, [nodes inserted])]; the groups are held (ref) so that removing works even
+        # after FreeCAD dropped the view provider's scene graph (a closed document)
+        self.groups = groups
+        for group, _ in groups:
+            group.ref()
         self.failures = []
 
     def remove(self):
@@ -83,7 +87,11 @@ class AdaptiveDisplay:
                 index = group.findChild(child)
                 if index >= 0:
                     group.removeChild(index)
+            group.unref()
         self.groups = []
+        if self.node is not None:
+            self.node.unref()  # the reference enable_adaptive_display took
+            self.node = None
 
 
 _displays = {}
@@ -186,6 +194,9 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
     if not groups:
         raise RuntimeError("NurbsLOD: {} has no face set in its view provider".format(obj.Label))
     node = coin.SoType.fromName(coin.SbName("SoNurbsLODShape")).createInstance()
+    # pivy does not own a node made by createInstance: hold it until disable, so that the
+    # Python proxy never outlives it
+    node.ref()
     node.pixelError = pixel_error
     node.frameBudget = frame_budget_ms
     summary = NurbsLODCoin.set_shape(node, obj.Shape.exportBrepToString())
@@ -201,6 +212,8 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
     display = AdaptiveDisplay(obj, node, inserted_groups)
     display.failures = summary["faces_failed"]
     _displays[_key(obj)] = display
+    _observe()
+    _update_hidden_faces(obj.Document.Name, obj.Name)
     report_failures(obj, summary["faces_failed"])
     return summary
 
@@ -246,3 +259,116 @@ def refresh(obj):
     summary = NurbsLODCoin.set_shape(display.node, obj.Shape.exportBrepToString())
     report_failures(obj, summary["faces_failed"])
     return summary
+
+
+# Selection: FreeCAD's face set draws the selected and pre-selected faces highlighted, so the
+# node leaves those faces to it (both drawn would fight in the depth buffer).
+_preselection = None  # (document, object, subelement)
+
+
+def _hidden_faces(document_name, object_name):
+    import FreeCADGui
+
+    display = _displays.get((document_name, object_name))
+    count = len(display.obj.Shape.Faces)
+    faces = set()
+    names = []
+    for selection in FreeCADGui.Selection.getSelectionEx(document_name):
+        if selection.ObjectName != object_name:
+            continue
+        if not selection.SubElementNames:
+            return list(range(1, count + 1))  # the whole object is highlighted
+        names.extend(selection.SubElementNames)
+    if _preselection and _preselection[:2] == (document_name, object_name):
+        names.append(_preselection[2])
+    for name in names:
+        if name.startswith("Face") and name[4:].isdigit():
+            faces.add(int(name[4:]))
+    return sorted(faces)
+
+
+def _update_hidden_faces(document_name, object_name):
+    display = _displays.get((document_name, object_name))
+    if display is None or display.node is None:
+        return
+    try:
+        faces = _hidden_faces(document_name, object_name)
+    except Exception as error:  # an observer must not raise into FreeCAD
+        FreeCAD.Console.PrintWarning("NurbsLOD: selection update failed: {}\n".format(error))
+        return
+    current = list(display.node.hiddenFaces.getValues()) if display.node.hiddenFaces.getNum() else []
+    if current != faces:
+        display.node.hiddenFaces.setNum(0)
+        if faces:
+            display.node.hiddenFaces.setValues(0, len(faces), faces)
+
+
+def _update_document(document_name):
+    for document, name in list(_displays):
+        if document == document_name:
+            _update_hidden_faces(document, name)
+
+
+class _SelectionObserver:
+    def addSelection(self, document, obj, sub, point):
+        _update_hidden_faces(document, obj)
+
+    def removeSelection(self, document, obj, sub):
+        _update_hidden_faces(document, obj)
+
+    def setSelection(self, document):
+        _update_document(document)
+
+    def clearSelection(self, document):
+        _update_document(document)
+
+    def setPreselection(self, document, obj, sub):
+        global _preselection
+        _preselection = (document, obj, sub)
+        _update_hidden_faces(document, obj)
+
+    def removePreselection(self, document, obj, sub):
+        global _preselection
+        _preselection = None
+        _update_hidden_faces(document, obj)
+
+
+class _DocumentObserver:
+    """Forgets objects that go away and re-reads shapes that change."""
+
+    def slotDeletedObject(self, obj):
+        if _key(obj) in _displays:
+            disable_adaptive_display(obj)
+
+    def slotDeletedDocument(self, document):
+        for key in [key for key in _displays if key[0] == document.Name]:
+            _displays.pop(key).remove()
+
+    def slotChangedObject(self, obj, prop):
+        if prop != "Shape" or _key(obj) not in _displays or _editing:
+            return
+        try:
+            if obj.Shape.isNull() or not obj.Shape.Faces:
+                disable_adaptive_display(obj)
+            else:
+                refresh(obj)
+        except Exception as error:
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: {}: adaptive display off: {}\n".format(obj.Label, error)
+            )
+            disable_adaptive_display(obj)
+
+
+_observers = []
+_editing = False  # move_pole updates the node itself
+
+
+def _observe():
+    if _observers:
+        return
+    import FreeCADGui
+
+    selection, document = _SelectionObserver(), _DocumentObserver()
+    FreeCADGui.Selection.addObserver(selection)
+    FreeCAD.addDocumentObserver(document)
+    _observers.extend((selection, document))

@@ -80,6 +80,7 @@ py::dict stats(const py::object& node) {
     out["triangles"] = s.triangles;
     out["max_screen_error_px"] = s.maxScreenErrorPx;
     out["last_frame_tessellation_ms"] = s.lastFrameTessellationMs;
+    out["last_frame_selection_ms"] = s.selectionMs;
     out["faces_visible"] = s.facesVisible;
     out["faces_culled"] = s.facesCulled;
     out["faces_failed"] = s.facesFailed;
@@ -87,6 +88,7 @@ py::dict stats(const py::object& node) {
     out["pending_jobs"] = s.pendingJobs;
     out["background_tessellation_ms"] = s.workerMs;
     out["frames"] = s.frames;
+    out["face_triangles"] = s.faceTriangles;
     out["pixel_error"] = shape->pixelError.getValue();
     out["frame_budget_ms"] = shape->frameBudget.getValue();
     out["last_error"] = shape->lastError();
@@ -158,7 +160,8 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
     m.def("stats", &stats, py::arg("node"),
           "What the node's last frame drew: triangles, max_screen_error_px, "
           "last_frame_tessellation_ms, faces_visible, faces_culled, faces_failed, "
-          "faces_waiting, pending_jobs, background_tessellation_ms, frames, failures.");
+          "faces_waiting, pending_jobs, background_tessellation_ms, frames, face_triangles "
+          "(per face, 0: not drawn), failures.");
     m.def("replace_face", &replaceFace, py::arg("node"), py::arg("face"), py::arg("brep"),
           py::arg("level") = -1,
           "Replaces face `face` (1-based) by the one face of `brep` and re-tessellates only it; "
