@@ -261,6 +261,63 @@ def refresh(obj):
     return summary
 
 
+# The view property that the command and undo go through.
+PROPERTY = "AdaptiveDisplay"
+
+
+def set_adaptive_display(objects, enabled):
+    """Turns adaptive display on or off for the objects in one undoable step per document:
+    sets their view property AdaptiveDisplay in a transaction, and the change swaps the
+    display (so Edit > Undo swaps back)."""
+    _observe()
+    objects = list(objects)
+    documents = []
+    for obj in objects:
+        if obj.Document not in documents:
+            documents.append(obj.Document)
+    # The property is added outside the transaction: undoing its addition would remove it
+    # without telling the observer, and the display would not swap back.
+    for obj in objects:
+        view = obj.ViewObject
+        if not hasattr(view, PROPERTY):
+            view.addProperty(
+                "App::PropertyBool",
+                PROPERTY,
+                "NurbsLOD",
+                "Draw every face within the screen-space error of the preferences",
+            )
+            setattr(view, PROPERTY, is_enabled(obj))
+    name = "Adaptive display {}".format("on" if enabled else "off")
+    for document in documents:
+        document.openTransaction(name)
+    try:
+        for obj in objects:
+            setattr(obj.ViewObject, PROPERTY, bool(enabled))
+    finally:
+        for document in documents:
+            document.commitTransaction()
+
+
+class _ViewObserver:
+    """Swaps the display when the view property changes: the command, undo, redo, the
+    property editor."""
+
+    def slotChangedObject(self, view, prop):
+        if prop != PROPERTY:
+            return
+        obj = view.Object
+        try:
+            wanted = bool(getattr(view, PROPERTY))
+            if wanted and not is_enabled(obj):
+                enable_adaptive_display(obj)
+            elif not wanted and is_enabled(obj):
+                disable_adaptive_display(obj)
+        except Exception as error:  # an observer must not raise into FreeCAD
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: {}: adaptive display not changed: {}\n".format(obj.Label, error)
+            )
+
+
 # Selection: FreeCAD's face set draws the selected and pre-selected faces highlighted, so the
 # node leaves those faces to it (both drawn would fight in the depth buffer).
 _preselection = None  # (document, object, subelement)
@@ -368,7 +425,8 @@ def _observe():
         return
     import FreeCADGui
 
-    selection, document = _SelectionObserver(), _DocumentObserver()
+    selection, document, view = _SelectionObserver(), _DocumentObserver(), _ViewObserver()
     FreeCADGui.Selection.addObserver(selection)
     FreeCAD.addDocumentObserver(document)
-    _observers.extend((selection, document))
+    FreeCADGui.addDocumentObserver(view)
+    _observers.extend((selection, document, view))
