@@ -430,3 +430,128 @@ def _observe():
     FreeCAD.addDocumentObserver(document)
     FreeCADGui.addDocumentObserver(view)
     _observers.extend((selection, document, view))
+
+
+# Control-point editing (paper out-of-core-lod, section 5): an edit changes one face's
+# surface; only that face's LOD cache is dropped and only it is tessellated again.
+
+
+def _finite_vector(vector):
+    try:
+        values = [float(vector[k]) for k in range(3)]
+    except (TypeError, ValueError, IndexError):
+        values = [float(getattr(vector, name, float("nan"))) for name in ("x", "y", "z")]
+    if not all(math.isfinite(v) for v in values):
+        raise ValueError("NurbsLOD: the pole position must be three finite numbers, got {!r}".format(vector))
+    return FreeCAD.Vector(*values)
+
+
+def _face_on_surface(face, surface):
+    """face's boundary on a new surface of the same parameter domain."""
+    import Part
+
+    u0, u1, v0, v1 = face.ParameterRange
+    su0, su1, sv0, sv1 = face.Surface.bounds()
+    tolerance = 1e-9 * max(1.0, abs(su1 - su0), abs(sv1 - sv0))
+    natural = len(face.Wires) == 1 and all(
+        abs(a - b) <= tolerance for a, b in ((u0, su0), (u1, su1), (v0, sv0), (v1, sv1))
+    )
+    if natural:
+        new_face = surface.toShape(u0, u1, v0, v1)
+    else:
+        # a trimmed face: its loops' curves in (u, v), put on the new surface
+        def on_new_surface(wire):
+            edges = []
+            for edge in wire.OrderedEdges:
+                curve2d, first, last = face.curveOnSurface(edge)
+                edges.append(curve2d.toShape(surface, first, last))
+            return Part.Wire(edges)
+
+        outer = face.OuterWire
+        holes = [wire for wire in face.Wires if not wire.isSame(outer)]
+        new_face = Part.Face(surface, on_new_surface(outer))
+        if holes:
+            new_face.cutHoles([on_new_surface(wire) for wire in holes])
+        new_face.validate()
+        if not new_face.isValid():
+            raise ValueError("NurbsLOD: the trimming loops do not fit the moved surface")
+    if face.Orientation == "Reversed":
+        new_face.reverse()
+    return new_face
+
+
+def move_pole(obj, face_index, i, j, vector):
+    """Moves pole (i, j) (1-based, as Part.BSplineSurface counts) of face face_index
+    (1-based, obj.Shape.Faces[face_index - 1]) to vector, in one undoable transaction.
+
+    With adaptive display on, only that face is tessellated again, at the level it showed.
+    Returns {"display_ms": time until the node showed the new face (None without adaptive
+    display), "total_ms": the whole edit including FreeCAD's own update}. Raises ValueError
+    naming the face and the reason for anything that cannot be edited.
+    """
+    import time
+
+    import Part
+
+    start = time.perf_counter()
+    if getattr(obj, "TypeId", None) != "Part::Feature":
+        raise ValueError(
+            "NurbsLOD: {} is a {}, not a plain Part::Feature: a recompute would undo the edit".format(
+                getattr(obj, "Label", obj), getattr(obj, "TypeId", type(obj).__name__)
+            )
+        )
+    shape = obj.Shape
+    if not isinstance(face_index, int) or not 1 <= face_index <= len(shape.Faces):
+        raise ValueError(
+            "NurbsLOD: {} has faces 1 to {}, not {!r}".format(obj.Label, len(shape.Faces), face_index)
+        )
+    face = shape.Faces[face_index - 1]
+    surface = face.Surface
+    if not isinstance(surface, Part.BSplineSurface):
+        raise ValueError(
+            "NurbsLOD: {} face {} is a {}, not a B-spline surface: convert it first".format(
+                obj.Label, face_index, type(surface).__name__
+            )
+        )
+    if not (isinstance(i, int) and isinstance(j, int)) or not (
+        1 <= i <= surface.NbUPoles and 1 <= j <= surface.NbVPoles
+    ):
+        raise ValueError(
+            "NurbsLOD: {} face {} has poles (1..{}, 1..{}), not ({!r}, {!r})".format(
+                obj.Label, face_index, surface.NbUPoles, surface.NbVPoles, i, j
+            )
+        )
+    position = _finite_vector(vector)
+    new_surface = surface.copy()
+    new_surface.setPole(i, j, position)
+    new_face = _face_on_surface(face, new_surface)
+    if len(shape.Faces) == 1 and shape.ShapeType == "Face":
+        new_shape = new_face
+    else:
+        new_shape = shape.replaceShape([(face, new_face)])
+
+    global _editing
+    display_ms = None
+    display = _displays.get(_key(obj))
+    if display is not None:
+        _, NurbsLODCoin = _coin()
+        level = NurbsLODCoin.shown_level(display.node, face_index)
+        display_ms = NurbsLODCoin.replace_face(
+            display.node, face_index, new_face.exportBrepToString(), level
+        )
+    document = obj.Document
+    document.openTransaction("Move pole")
+    _editing = display is not None  # the node has the new face already
+    try:
+        obj.Shape = new_shape
+    finally:
+        _editing = False
+        document.commitTransaction()
+    return {"display_ms": display_ms, "total_ms": (time.perf_counter() - start) * 1000.0}
+
+
+def face_bounds(obj, face_index):
+    """The box of the mesh the node showed last for face face_index (1-based):
+    ((xmin, ymin, zmin), (xmax, ymax, zmax)), or None."""
+    _, NurbsLODCoin = _coin()
+    return NurbsLODCoin.face_bounds(_display_of(obj).node, face_index)

@@ -126,6 +126,19 @@ int shownLevel(const py::object& node, int faceIndex) {
     return shape->shownLevel(faceIndex - 1);
 }
 
+// The box of the level face `face` (1-based) showed last (its coarsest before any frame):
+// ((xmin, ymin, zmin), (xmax, ymax, zmax)), or None for a face that has no level.
+py::object faceBounds(const py::object& node, int faceIndex) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    if (!shape->hasModel() || faceIndex < 1 || faceIndex > shape->cache()->faceCount())
+        return py::none();
+    const FaceLod* lod = shape->cache()->bestCached(
+        faceIndex - 1, std::max(shape->shownLevel(faceIndex - 1), 0), nullptr);
+    if (!lod) return py::none();
+    return py::make_tuple(py::make_tuple(lod->boxMin[0], lod->boxMin[1], lod->boxMin[2]),
+                          py::make_tuple(lod->boxMax[0], lod->boxMax[1], lod->boxMax[2]));
+}
+
 void translateFailures() {
     py::register_exception_translator([](std::exception_ptr error) {
         try {
@@ -166,6 +179,8 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
           py::arg("level") = -1,
           "Replaces face `face` (1-based) by the one face of `brep` and re-tessellates only it; "
           "returns the milliseconds that took.");
+    m.def("face_bounds", &faceBounds, py::arg("node"), py::arg("face"),
+          "The box of the level face `face` (1-based) showed last, or None.");
     m.def("shown_level", &shownLevel, py::arg("node"), py::arg("face"),
           "The level face `face` (1-based) showed in the last frame, -1 when not drawn.");
 }

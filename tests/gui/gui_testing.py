@@ -156,3 +156,25 @@ def coloured_pixels(path, channel):
             elif channel == "yellow" and r > b + 60 and g > b + 60:
                 count += 1
     return count
+
+
+def bicubic_face(count=20, size=100.0):
+    """A count x count bicubic B-spline face over a size x size square, gently waved."""
+    import math
+
+    import Part
+
+    poles = [
+        [
+            FreeCAD.Vector(size * i / (count - 1), size * j / (count - 1),
+                           3.0 * math.sin(i * 0.7) * math.cos(j * 0.5))
+            for j in range(count)
+        ]
+        for i in range(count)
+    ]
+    spans = count - 3
+    knots = [float(k) for k in range(spans + 1)]
+    mults = [4] + [1] * (spans - 1) + [4]
+    surface = Part.BSplineSurface()
+    surface.buildFromPolesMultsKnots(poles, mults, mults, knots, knots, False, False, 3, 3)
+    return surface.toShape()
