@@ -101,11 +101,11 @@ void FaceLodCache::request(int face, int level) {
                 std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start).count();
         }
         // notified under the lock: the destructor may free the condition variable as soon as
-        // it sees pending_ reach 0
+        // it sees pending_ reach 0. Only the last job wakes the waiting frame: a wake-up per
+        // job costs the rendering thread a trip through the scheduler each.
         std::lock_guard lock(finishedMutex_);
         finished_.push_back(std::move(finished));
-        --pending_;
-        finishedChanged_.notify_all();
+        if (--pending_ == 0) finishedChanged_.notify_all();
     });
 }
 
@@ -137,8 +137,7 @@ bool FaceLodCache::waitForFinished(Clock::time_point deadline) {
     std::unique_lock lock(finishedMutex_);
     if (!finished_.empty()) return true;
     if (pending_.load() == 0) return false;
-    finishedChanged_.wait_until(lock, deadline,
-                                [this] { return !finished_.empty() || pending_.load() == 0; });
+    finishedChanged_.wait_until(lock, deadline, [this] { return pending_.load() == 0; });
     return !finished_.empty();
 }
 
@@ -170,7 +169,31 @@ double FaceLodCache::replaceFace(int face, const Model& replacement, int level) 
         for (TrimCurve& curve : loop.curves)
             if (curve.edge >= 0) curve.edge += edgeBase;
     edited->faces[face] = std::move(surface);
+    return installFace(face, std::move(edited), level, start);
+}
 
+double FaceLodCache::movePole(int face, int i, int j, const Point3& position, int level) {
+    if (face < 0 || face >= faceCount())
+        throw std::out_of_range("no face " + std::to_string(face + 1) + " in the model");
+    const BSplineSurface& surface = model_->faces[face].surface;
+    if (i < 0 || j < 0 || i >= surface.countU() || j >= surface.countV())
+        throw std::out_of_range("face " + std::to_string(face + 1) + " has poles (1.." +
+                                std::to_string(surface.countU()) + ", 1.." +
+                                std::to_string(surface.countV()) + "), not (" +
+                                std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")");
+    if (!position.allFinite())
+        throw std::invalid_argument("face " + std::to_string(face + 1) +
+                                    ": the pole position is not finite");
+    const auto start = Clock::now();
+    auto edited = std::make_shared<Model>(*model_);
+    HomogeneousPoint3& pole = edited->faces[face].surface.pole(i, j);
+    const double weight = pole.w();
+    pole.head<3>() = weight * position;  // P^w = (w x, w y, w z, w), NURBS Book 4.15
+    return installFace(face, std::move(edited), level, start);
+}
+
+double FaceLodCache::installFace(int face, std::shared_ptr<Model> edited, int level,
+                                 Clock::time_point start) {
     FaceLodResult result = tessellateFaceLod(*edited, face, levelTolerance(level));
     if (!result.lod)
         throw std::runtime_error("face " + std::to_string(face + 1) + ": " + result.failure);

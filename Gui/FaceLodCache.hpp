@@ -64,7 +64,8 @@ public:
 
     // Moves finished levels into the caches; returns how many arrived.
     int collectFinished();
-    // Waits until a job finishes or the deadline passes; false when nothing is pending.
+    // Waits until every pending job finished or the deadline passed; true when levels wait
+    // to be collected.
     bool waitForFinished(std::chrono::steady_clock::time_point deadline);
     int pendingJobs() const { return pending_.load(); }
     bool hasFinished() const;
@@ -76,8 +77,14 @@ public:
     // std::runtime_error with the reason when the new face cannot be tessellated (the old
     // levels are then kept).
     double replaceFace(int face, const Model& replacement, int level);
+    // An edit that keeps the face's loops: pole (i, j) (0-based) of its surface moves to
+    // `position` (its weight kept). Otherwise like replaceFace; throws std::out_of_range for
+    // a pole the surface does not have.
+    double movePole(int face, int i, int j, const Point3& position, int level);
 
 private:
+    double installFace(int face, std::shared_ptr<Model> edited, int level,
+                       std::chrono::steady_clock::time_point start);
     struct FaceState {
         std::map<int, std::shared_ptr<const FaceLod>> levels;
         int pendingLevel = -1;

@@ -18,9 +18,10 @@ namespace nurbslod::gui {
 // What the last frame drew, for the macro API's stats() and the tests.
 struct FrameStats {
     std::size_t triangles = 0;
-    double maxScreenErrorPx = 0;         // of the drawn levels, over the visible faces
-    double lastFrameTessellationMs = 0;  // time the frame spent on LOD work (selection, waiting)
-    double selectionMs = 0;              // of which choosing levels and culling
+    double maxScreenErrorPx = 0;            // of the drawn levels, over the visible faces
+    double lastFrameTessellationMs = 0;     // time the frame spent on LOD work (selection, waiting)
+    double lastFrameTessellationCpuMs = 0;  // the same in CPU time of the rendering thread
+    double selectionMs = 0;                 // of which choosing levels and culling
     int facesVisible = 0;
     int facesCulled = 0;
     int facesFailed = 0;

@@ -10,6 +10,8 @@
 #include <pybind11/stl.h>
 
 #include <Standard_Failure.hxx>
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <memory>
 #include <stdexcept>
@@ -80,6 +82,7 @@ py::dict stats(const py::object& node) {
     out["triangles"] = s.triangles;
     out["max_screen_error_px"] = s.maxScreenErrorPx;
     out["last_frame_tessellation_ms"] = s.lastFrameTessellationMs;
+    out["last_frame_tessellation_cpu_ms"] = s.lastFrameTessellationCpuMs;
     out["last_frame_selection_ms"] = s.selectionMs;
     out["faces_visible"] = s.facesVisible;
     out["faces_culled"] = s.facesCulled;
@@ -96,28 +99,71 @@ py::dict stats(const py::object& node) {
     return out;
 }
 
-// An edit of one face: `brep` holds the new face alone. Only that face is re-tessellated, at
-// the level it showed (or `level`), in this thread; its other levels are dropped. Returns the
-// milliseconds from the call to the new level being ready.
-double replaceFace(const py::object& node, int faceIndex, const std::string& brep, int level) {
+// An edit of one face: `brep` holds the new face alone. Only that face is tessellated again,
+// at `level` (0, the coarsest, by default: paper out-of-core-lod 6.4 applies an edit at once
+// with the coarsest level), in this thread; its other levels are dropped, and the next frames
+// ask the workers for the level the view needs. Returns {import_ms, tessellate_ms, total_ms,
+// level, triangles}.
+py::dict replaceFace(const py::object& node, int faceIndex, const std::string& brep, int level) {
     SoNurbsLODShape* shape = nodeOf(node);
     if (!shape->hasModel()) throw py::value_error("NurbsLODCoin: the node has no model yet");
+    if (faceIndex < 1 || faceIndex > shape->cache()->faceCount())
+        throw py::value_error("NurbsLODCoin: no face " + std::to_string(faceIndex) + " (1 to " +
+                              std::to_string(shape->cache()->faceCount()) + ")");
     const auto start = Clock::now();
+    double importMs = 0, tessellateMs = 0;
+    FaceLodCache& cache = *shape->cache();
+    level = std::clamp(level, 0, cache.finestLevel());
     {
         py::gil_scoped_release release;
         const Model replacement = occ::importModel(occ::shapeFromBrepString(brep));
+        importMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         if (replacement.faces.size() != 1)
             throw std::invalid_argument("the replacement shape must have exactly one face, not " +
                                         std::to_string(replacement.faces.size()));
         if (!replacement.faces.front().error.empty())
             throw std::invalid_argument("face " + std::to_string(faceIndex) + ": " +
                                         replacement.faces.front().error);
-        FaceLodCache& cache = *shape->cache();
-        if (level < 0) level = 0;
-        cache.replaceFace(faceIndex - 1, replacement, std::min(level, cache.finestLevel()));
+        tessellateMs = cache.replaceFace(faceIndex - 1, replacement, level);
     }
     shape->touch();
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    py::dict out;
+    out["import_ms"] = importMs;
+    out["tessellate_ms"] = tessellateMs;
+    out["total_ms"] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    out["level"] = level;
+    out["triangles"] = cache.bestCached(faceIndex - 1, level, nullptr)->triangleCount();
+    return out;
+}
+
+// An edit that keeps the face's loops: pole (i, j) (1-based, as Part.BSplineSurface counts)
+// moves to `position`; no BREP crosses. Only for surfaces the importer took over pole for
+// pole (not periodic). Returns {tessellate_ms, total_ms, level, triangles}.
+py::dict movePole(const py::object& node, int faceIndex, int i, int j,
+                  const std::array<double, 3>& position, int level) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    if (!shape->hasModel()) throw py::value_error("NurbsLODCoin: the node has no model yet");
+    const auto start = Clock::now();
+    FaceLodCache& cache = *shape->cache();
+    level = std::clamp(level, 0, cache.finestLevel());
+    double tessellateMs = 0;
+    try {
+        py::gil_scoped_release release;
+        tessellateMs = cache.movePole(faceIndex - 1, i - 1, j - 1,
+                                      Point3(position[0], position[1], position[2]), level);
+    } catch (const std::out_of_range& error) {
+        throw py::value_error(std::string("NurbsLODCoin: ") + error.what());
+    } catch (const std::invalid_argument& error) {
+        throw py::value_error(std::string("NurbsLODCoin: ") + error.what());
+    }
+    shape->touch();
+    py::dict out;
+    out["import_ms"] = 0.0;
+    out["tessellate_ms"] = tessellateMs;
+    out["total_ms"] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    out["level"] = level;
+    out["triangles"] = cache.bestCached(faceIndex - 1, level, nullptr)->triangleCount();
+    return out;
 }
 
 int shownLevel(const py::object& node, int faceIndex) {
@@ -176,9 +222,15 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
           "faces_waiting, pending_jobs, background_tessellation_ms, frames, face_triangles "
           "(per face, 0: not drawn), failures.");
     m.def("replace_face", &replaceFace, py::arg("node"), py::arg("face"), py::arg("brep"),
-          py::arg("level") = -1,
-          "Replaces face `face` (1-based) by the one face of `brep` and re-tessellates only it; "
-          "returns the milliseconds that took.");
+          py::arg("level") = 0,
+          "Replaces face `face` (1-based) by the one face of `brep` and tessellates only it, at "
+          "`level` (0: the coarsest); finer levels follow from the workers. Returns {import_ms, "
+          "tessellate_ms, total_ms, level, triangles}.");
+    m.def("move_pole", &movePole, py::arg("node"), py::arg("face"), py::arg("i"), py::arg("j"),
+          py::arg("position"), py::arg("level") = 0,
+          "Moves pole (i, j) (1-based) of face `face` (1-based) to position (x, y, z) and "
+          "tessellates only that face at `level`; returns {import_ms, tessellate_ms, total_ms, "
+          "level, triangles}.");
     m.def("face_bounds", &faceBounds, py::arg("node"), py::arg("face"),
           "The box of the level face `face` (1-based) showed last, or None.");
     m.def("shown_level", &shownLevel, py::arg("node"), py::arg("face"),

@@ -3,7 +3,7 @@ then zoomed in 10 times on a face; once the view has settled, every visible face
 within half a pixel on screen, and no frame may have spent more than its budget on LOD work.
 """
 
-import math
+import os
 import shutil
 import tempfile
 import unittest
@@ -45,18 +45,31 @@ class ZoomCase:
         gt.screenshot(view, self.model_name + "-zoom10")
         FreeCAD.Console.PrintMessage(
             "NurbsLOD GUI test {}: fitted {} triangles ({:.3f} px), zoomed {} triangles "
-            "({:.3f} px, {} frames to settle, worst frame {:.2f} ms of LOD work, "
-            "{:.0f} ms in workers)\n".format(
+            "({:.3f} px, {} frames to settle, worst frame {:.2f} ms of LOD work, {:.2f} ms "
+            "of it CPU, {:.0f} ms in workers)\n".format(
                 self.model_name, fitted["triangles"], fitted["max_screen_error_px"],
                 zoomed["triangles"], zoomed["max_screen_error_px"], frames,
-                max(worst_fit_ms, worst_zoom_ms), zoomed["background_tessellation_ms"]))
+                max(worst_fit_ms, worst_zoom_ms),
+                max(fitted["worst_cpu_ms"], zoomed["worst_cpu_ms"]),
+                zoomed["background_tessellation_ms"]))
 
         self.assertGreater(zoomed["faces_visible"], 0)
         self.assertGreater(zoomed["faces_culled"], 0, "a 10x zoom leaves faces outside the view")
         self.assertGreater(zoomed["triangles"], fitted["triangles"])
         self.assertLessEqual(fitted["max_screen_error_px"], 0.5)
         self.assertLessEqual(zoomed["max_screen_error_px"], 0.5)
-        self.assertLessEqual(max(worst_fit_ms, worst_zoom_ms), budget)
+        # The budget bounds the frame's LOD work in the rendering thread's CPU time always,
+        # and in wall time when the machine is not oversubscribed (other processes on the
+        # cores add their time slices to any wall-clock measure).
+        self.assertLessEqual(max(fitted["worst_cpu_ms"], zoomed["worst_cpu_ms"]), budget)
+        load = os.getloadavg()[0]
+        if load <= os.cpu_count():
+            self.assertLessEqual(max(worst_fit_ms, worst_zoom_ms), budget)
+        else:
+            FreeCAD.Console.PrintMessage(
+                "NurbsLOD GUI test {}: wall-clock budget not checked: load {:.1f} on {} "
+                "cores\n".format(self.model_name, load, os.cpu_count()))
+        self.assertLessEqual(zoomed["last_frame_tessellation_ms"], budget)
         self.assertEqual(zoomed["last_error"], "")
 
 
