@@ -484,10 +484,12 @@ def move_pole(obj, face_index, i, j, vector):
     """Moves pole (i, j) (1-based, as Part.BSplineSurface counts) of face face_index
     (1-based, obj.Shape.Faces[face_index - 1]) to vector, in one undoable transaction.
 
-    With adaptive display on, only that face is tessellated again, at the level it showed.
-    Returns {"display_ms": time until the node showed the new face (None without adaptive
-    display), "total_ms": the whole edit including FreeCAD's own update}. Raises ValueError
-    naming the face and the reason for anything that cannot be edited.
+    With adaptive display on, only that face is tessellated again: at once at the coarsest
+    level (paper out-of-core-lod 6.4), then by the workers at the level the view needs.
+    Returns {"display_ms": time until the node holds the new face (None without adaptive
+    display), "display": the node's {import_ms, tessellate_ms, total_ms, level, triangles},
+    "total_ms": the whole edit including FreeCAD's own update}. Raises ValueError naming the
+    face and the reason for anything that cannot be edited.
     """
     import time
 
@@ -531,14 +533,19 @@ def move_pole(obj, face_index, i, j, vector):
         new_shape = shape.replaceShape([(face, new_face)])
 
     global _editing
-    display_ms = None
+    node_update = None
     display = _displays.get(_key(obj))
     if display is not None:
         _, NurbsLODCoin = _coin()
-        level = NurbsLODCoin.shown_level(display.node, face_index)
-        display_ms = NurbsLODCoin.replace_face(
-            display.node, face_index, new_face.exportBrepToString(), level
-        )
+        if surface.isUPeriodic() or surface.isVPeriodic():
+            # the importer re-knots periodic surfaces: poles do not map one to one
+            node_update = NurbsLODCoin.replace_face(
+                display.node, face_index, new_face.exportBrepToString(), 0
+            )
+        else:
+            node_update = NurbsLODCoin.move_pole(
+                display.node, face_index, i, j, (position.x, position.y, position.z), 0
+            )
     document = obj.Document
     document.openTransaction("Move pole")
     _editing = display is not None  # the node has the new face already
@@ -547,7 +554,11 @@ def move_pole(obj, face_index, i, j, vector):
     finally:
         _editing = False
         document.commitTransaction()
-    return {"display_ms": display_ms, "total_ms": (time.perf_counter() - start) * 1000.0}
+    return {
+        "display_ms": node_update["total_ms"] if node_update else None,
+        "display": node_update,
+        "total_ms": (time.perf_counter() - start) * 1000.0,
+    }
 
 
 def face_bounds(obj, face_index):
