@@ -72,6 +72,25 @@ std::shared_ptr<FaceLod> toFaceLod(const Mesh& mesh, double tolerance) {
             lod->indices.push_back(it->second);
         }
     }
+    // Border segments: mesh edges (by position, so split normals do not split an edge) that
+    // one triangle uses.
+    std::unordered_map<std::uint64_t, std::pair<int, std::size_t>> edgeUses;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (int corner = 0; corner < 3; ++corner) {
+            const std::uint32_t a = mesh.triangles[t][corner];
+            const std::uint32_t b = mesh.triangles[t][(corner + 1) % 3];
+            const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+            auto [it, added] = edgeUses.try_emplace(key, 0, 3 * t + corner);
+            ++it->second.first;
+        }
+    }
+    for (const auto& [key, use] : edgeUses) {
+        if (use.first != 1) continue;
+        const std::size_t first = use.second;
+        const std::size_t second = first - first % 3 + (first % 3 + 1) % 3;
+        lod->borderLines.push_back(lod->indices[first]);
+        lod->borderLines.push_back(lod->indices[second]);
+    }
     return lod;
 }
 

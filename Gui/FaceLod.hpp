@@ -18,6 +18,9 @@ struct FaceLod {
     std::vector<float> positions;        // x y z per vertex
     std::vector<float> normals;          // x y z per vertex, unit
     std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise
+    // Two per segment: the mesh's border (edges of one triangle only), i.e. the face's
+    // trimming loops at this level's tolerance, drawn as the face's B-rep edges.
+    std::vector<std::uint32_t> borderLines;
     float boxMin[3] = {0, 0, 0};
     float boxMax[3] = {0, 0, 0};
 

@@ -1,21 +1,18 @@
 #include "SoNurbsLODShape.hpp"
 
+#include "ViewPixelSize.hpp"
+
 // clang-format off: Coin's GL header must come before the glue header
 #include <Inventor/C/glue/gl.h>
 #include <Inventor/system/gl.h>
 // clang-format on
 #include <Inventor/SbBox3f.h>
-#include <Inventor/SbViewVolume.h>
-#include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/bundles/SoMaterialBundle.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/elements/SoGLCacheContextElement.h>
-#include <Inventor/elements/SoModelMatrixElement.h>
-#include <Inventor/elements/SoViewVolumeElement.h>
-#include <Inventor/elements/SoViewportRegionElement.h>
 #include <Inventor/sensors/SoTimerSensor.h>
 #include <time.h>
 
@@ -43,13 +40,6 @@ double threadCpuMilliseconds() {
 SbBox3f boxOf(const FaceLod& lod) {
     return {lod.boxMin[0], lod.boxMin[1], lod.boxMin[2],
             lod.boxMax[0], lod.boxMax[1], lod.boxMax[2]};
-}
-
-// The point of the box nearest to p (p itself when inside).
-SbVec3f nearestPoint(const SbBox3f& box, const SbVec3f& p) {
-    SbVec3f q;
-    for (int k = 0; k < 3; ++k) q[k] = std::clamp(p[k], box.getMin()[k], box.getMax()[k]);
-    return q;
 }
 }  // namespace
 
@@ -134,18 +124,9 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     // whole frame's LOD work, not only the wait.
     const auto deadline = frameStart + std::chrono::microseconds(static_cast<long long>(
                                            std::max(0.0f, frameBudget.getValue()) * 250.0f));
-    const SbViewVolume& viewVolume = SoViewVolumeElement::get(state);
-    const SbViewportRegion& viewport = SoViewportRegionElement::get(state);
-    const SbMatrix& modelMatrix = SoModelMatrixElement::get(state);
-    const int windowHeight = std::max<int>(1, viewport.getViewportSizePixels()[1]);
+    const nurbslod::gui::ViewPixelSize pixelSizeAt(state);
     const double allowedPixels =
         pixelError.getValue() > 0 ? static_cast<double>(pixelError.getValue()) : 0.5;
-    // Placements are rigid in FreeCAD; a scale would change model units per world unit.
-    SbVec3f unitX;
-    modelMatrix.multDirMatrix(SbVec3f(1, 0, 0), unitX);
-    const double scale = unitX.length() > 0 ? unitX.length() : 1.0;
-    const bool perspective = viewVolume.getProjectionType() == SbViewVolume::PERSPECTIVE;
-    const SbVec3f eye = viewVolume.getProjectionPoint();
 
     cache_->collectFinished();
     const int faceCount = cache_->faceCount();
@@ -154,7 +135,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
         const int face = hiddenFaces[k] - 1;
         if (face >= 0 && face < faceCount) hidden[static_cast<std::size_t>(face)] = 1;
     }
-    // World size of one pixel at each visible face (or -1 for a culled face).
+    // Size of one pixel at each visible face, model units (or -1 for a culled face).
     std::vector<double> pixelSize(static_cast<std::size_t>(faceCount), -1);
     struct Request {
         double priority;
@@ -171,28 +152,13 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             ++frame.facesFailed;
             continue;
         }
-        SbBox3f box = boxOf(*coarsest);
-        // the coarsest level is within its tolerance of the surface: grow its box by that
-        const auto grow = static_cast<float>(coarsest->tolerance);
-        box.extendBy(box.getMin() - SbVec3f(grow, grow, grow));
-        box.extendBy(box.getMax() + SbVec3f(grow, grow, grow));
-        box.transform(modelMatrix);
-        if (!viewVolume.intersect(box)) {
+        const double pixel = pixelSizeAt.at(*coarsest);
+        if (pixel < 0) {
             ++frame.facesCulled;
             continue;
         }
-        const SbVec3f nearest = perspective ? nearestPoint(box, eye) : box.getCenter();
-        // world size of 1/h of the screen height at the face's depth (SbViewVolume)
-        double pixel = viewVolume.getWorldToScreenScale(nearest, 1.0f / windowHeight);
-        if (!(pixel > 0) || !std::isfinite(pixel)) {
-            // The eye is inside the box: epsilon_desired would be 0. Like the paper's 1 mm
-            // floor (section 4.1), take the pixel size at the near plane instead.
-            const SbVec3f near =
-                eye + viewVolume.getProjectionDirection() * viewVolume.getNearDist();
-            pixel = viewVolume.getWorldToScreenScale(near, 1.0f / windowHeight);
-        }
         pixelSize[static_cast<std::size_t>(f)] = pixel;
-        const double desired = allowedPixels * pixel / scale;
+        const double desired = allowedPixels * pixel;
         const int wanted = cache_->levelFor(desired);
         if (!cache_->hasLevel(f, wanted)) {
             // section 4.2's priority: how far the cached level is from the wanted one
@@ -235,14 +201,14 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             shownLevel_[static_cast<std::size_t>(f)] = -1;
             continue;
         }
-        const int wanted = cache_->levelFor(allowedPixels * pixel / scale);
+        const int wanted = cache_->levelFor(allowedPixels * pixel);
         int level = -1;
         const FaceLod* lod = cache_->bestCached(f, wanted, &level);
         if (!lod) continue;
         shownLevel_[static_cast<std::size_t>(f)] = level;
         if (level < wanted) ++frame.facesWaiting;
         const double errorPx =
-            pixel > 0 ? lod->tolerance * scale / pixel : std::numeric_limits<double>::infinity();
+            pixel > 0 ? lod->tolerance / pixel : std::numeric_limits<double>::infinity();
         frame.maxScreenErrorPx = std::max(frame.maxScreenErrorPx, errorPx);
         frame.triangles += lod->triangleCount();
         frame.faceTriangles[static_cast<std::size_t>(f)] = lod->triangleCount();
@@ -253,9 +219,11 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     }
     glPopClientAttrib();
     stats_ = frame;
-    if (cache_->pendingJobs() > 0 || cache_->hasFinished()) {
-        if (!redrawSensor_->isScheduled()) redrawSensor_->schedule();
-    }
+    if (cache_->pendingJobs() > 0 || cache_->hasFinished()) scheduleRedraw();
+}
+
+void SoNurbsLODShape::scheduleRedraw() {
+    if (!redrawSensor_->isScheduled()) redrawSensor_->schedule();
 }
 
 void SoNurbsLODShape::rayPick(SoRayPickAction*) {

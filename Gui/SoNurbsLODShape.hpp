@@ -76,6 +76,14 @@ public:
     // The last error GLRender caught (it never lets one escape into the viewer).
     const std::string& lastError() const { return lastError_; }
 
+    // Asks for a redraw as soon as a worker finished a level (the edges node asks for levels
+    // too, in wireframe mode, where this node is not drawn).
+    void scheduleRedraw();
+    // The model's box (computeBBox, callable by the edges node).
+    void getBoundingBox(SoAction* action, SbBox3f& box, SbVec3f& center) {
+        computeBBox(action, box, center);
+    }
+
     void GLRender(SoGLRenderAction* action) override;
     void rayPick(SoRayPickAction* action) override;
     void getPrimitiveCount(SoGetPrimitiveCountAction* action) override;

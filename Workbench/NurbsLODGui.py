@@ -80,6 +80,7 @@ class AdaptiveDisplay:
         for group, _ in groups:
             group.ref()
         self.failures = []
+        self.edges = None
 
     def remove(self):
         for group, inserted in self.groups:
@@ -92,6 +93,9 @@ class AdaptiveDisplay:
         if self.node is not None:
             self.node.unref()  # the reference enable_adaptive_display took
             self.node = None
+        if self.edges is not None:
+            self.edges.unref()
+            self.edges = None
 
 
 _displays = {}
@@ -105,11 +109,12 @@ def _coin():
     return coin, NurbsLODCoin
 
 
-def _face_set_groups(view_object):
-    """(group, index of the face set) for every group that holds FreeCAD's face set."""
+def _face_set_groups(view_object, type_name="SoBrepFaceSet"):
+    """(group, index of the node) for every group that holds FreeCAD's face set (or another
+    node type of its view provider, such as its edge set SoBrepEdgeSet)."""
     coin, _ = _coin()
     search = coin.SoSearchAction()
-    search.setType(coin.SoType.fromName(coin.SbName("SoBrepFaceSet")))
+    search.setType(coin.SoType.fromName(coin.SbName(type_name)))
     search.setInterest(coin.SoSearchAction.ALL)
     search.setSearchingAll(True)
     search.apply(view_object.RootNode)
@@ -209,7 +214,23 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
         for offset, child in enumerate(inserted):
             group.insertChild(child, index + offset)
         inserted_groups.append((group, inserted))
+    # FreeCAD's edges come from one fixed tessellation whose chords sink behind the exact
+    # surface up close: the edges node draws the faces' borders at the view's level instead,
+    # FreeCAD's edge set stays for picking. Faces left to FreeCAD keep its edges.
+    edges = None
+    edge_groups = _face_set_groups(obj.ViewObject, "SoBrepEdgeSet")
+    if edge_groups and not summary["faces_failed"]:
+        edges = coin.SoType.fromName(coin.SbName("SoNurbsLODEdges")).createInstance()
+        edges.ref()
+        edges.shape.setValue(node)
+        for group, index in edge_groups:
+            hide = coin.SoDrawStyle()
+            hide.style = coin.SoDrawStyle.INVISIBLE
+            group.insertChild(edges, index)
+            group.insertChild(hide, index + 1)
+            inserted_groups.append((group, [edges, hide]))
     display = AdaptiveDisplay(obj, node, inserted_groups)
+    display.edges = edges
     display.failures = summary["faces_failed"]
     _displays[_key(obj)] = display
     _observe()

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "SoNurbsLODEdges.hpp"
 #include "SoNurbsLODShape.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
@@ -211,6 +212,7 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
     // Outside FreeCAD's GUI nothing has initialised Coin, and Coin crashes uninitialised.
     if (!SoDB::isInitialized()) SoDB::init();
     SoNurbsLODShape::initClass();
+    SoNurbsLODEdges::initClass();
     translateFailures();
 
     m.def("set_shape", &setShape, py::arg("node"), py::arg("brep"),

@@ -123,6 +123,13 @@ class SwapKeepsSelection(unittest.TestCase):
                          (info["Component"],))
         FreeCADGui.Selection.clearSelection()
         self.assertGreater(height, 0)
+        # edges too: the node draws them, FreeCAD's hidden edge set answers the pick
+        edge = self.obj.Shape.Edges[0]
+        middle = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
+        x, y = self.view.getPointOnScreen(middle)
+        info = self.view.getObjectInfo((int(x), int(y)))
+        self.assertIsNotNone(info, "no edge picked at ({}, {})".format(x, y))
+        self.assertTrue(info["Component"].startswith("Edge"), info)
 
     def test_selected_and_preselected_faces_show_freecad_highlight(self):
         NurbsLODGui.enable_adaptive_display(self.obj)
@@ -153,7 +160,8 @@ class SwapKeepsSelection(unittest.TestCase):
         display = NurbsLODGui._displays[(self.document.Name, self.obj.Name)]
         node = display.node
         for group, inserted in display.groups:
-            group.removeChild(group.findChild(node))
+            if group.findChild(node) >= 0:
+                group.removeChild(group.findChild(node))
         gt.draw(self.view)
         hidden = gt.shaded_pixels(gt.screenshot(self.view, "swap-hidden-face-set"))
         NurbsLODGui.disable_adaptive_display(self.obj)
