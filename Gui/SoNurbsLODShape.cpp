@@ -68,8 +68,13 @@ SoNurbsLODShape::~SoNurbsLODShape() {
 void SoNurbsLODShape::setModel(std::shared_ptr<const nurbslod::Model> model) {
     if (!model || model->faces.empty())
         throw std::invalid_argument("the shape has no faces to display");
+    setCache(std::make_unique<nurbslod::gui::FaceLodCache>(std::move(model)));
+}
+
+void SoNurbsLODShape::setCache(std::unique_ptr<nurbslod::gui::FaceLodCache> cache) {
+    if (!cache) throw std::invalid_argument("no model to display");
     cache_.reset();  // waits for the old model's workers before the new one starts
-    cache_ = std::make_unique<nurbslod::gui::FaceLodCache>(std::move(model));
+    cache_ = std::move(cache);
     shownLevel_.assign(static_cast<std::size_t>(cache_->faceCount()), -1);
     stats_ = {};
     stats_.facesFailed = static_cast<int>(cache_->failures().size());

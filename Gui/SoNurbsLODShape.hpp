@@ -64,6 +64,8 @@ public:
 
     // Replaces the model; throws std::invalid_argument for a model without faces.
     void setModel(std::shared_ptr<const nurbslod::Model> model);
+    // Takes a cache made elsewhere (a worker thread made it while FreeCAD kept drawing).
+    void setCache(std::unique_ptr<nurbslod::gui::FaceLodCache> cache);
     bool hasModel() const { return cache_ != nullptr; }
     nurbslod::gui::FaceLodCache* cache() { return cache_.get(); }
     nurbslod::gui::FrameStats stats() const;

@@ -176,13 +176,15 @@ def report_failures(obj, failures):
         )
 
 
-def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
+def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=True):
     """Draws obj's faces view-dependently: each face within pixel_error pixels on screen.
 
-    pixel_error and frame_budget_ms default to the preferences (0.5 px, 20 ms). Returns the
-    summary of the import: {faces, faces_failed: [{face, reason}], seconds}. Raises
-    ValueError for an object without faces or a bad argument; the object then keeps
-    FreeCAD's display.
+    pixel_error and frame_budget_ms default to the preferences (0.5 px, 20 ms). With wait
+    (the default) the model is imported here and the summary of the import is returned:
+    {faces, faces_failed: [{face, reason}], seconds}. With wait=False the import runs in a
+    thread while FreeCAD keeps drawing the object, the swap happens when it is done (see
+    is_pending) and None is returned. Raises ValueError for an object without faces or a bad
+    argument; the object then keeps FreeCAD's display.
     """
     pixel_error = _positive(pixel_error if pixel_error is not None else default_pixel_error(), "pixel_error")
     frame_budget_ms = _positive(
@@ -192,6 +194,102 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
         raise ValueError("NurbsLOD: {} has no faces to display".format(getattr(obj, "Label", obj)))
     if obj.ViewObject is None:
         raise RuntimeError("NurbsLOD: adaptive display needs the FreeCAD GUI")
+    if not _face_set_groups(obj.ViewObject):
+        raise RuntimeError("NurbsLOD: {} has no face set in its view provider".format(obj.Label))
+    _, NurbsLODCoin = _coin()
+    brep = obj.Shape.exportBrepToString()
+    if wait:
+        _pending.pop(_key(obj), None)
+        return _install(obj, NurbsLODCoin.prepare(brep), pixel_error, frame_budget_ms)
+    _prepare_in_thread(obj, brep, pixel_error, frame_budget_ms)
+    return None
+
+
+# Imports running in threads: key -> Preparation. The GUI thread polls them with a timer and
+# installs what is ready; a newer request for the same object replaces an older one.
+_pending = {}
+_poll_timer = None
+
+
+class _Preparation:
+    def __init__(self, obj, brep, pixel_error, frame_budget_ms):
+        import threading
+
+        self.obj = obj
+        self.label = obj.Label
+        self.options = (pixel_error, frame_budget_ms)
+        self.prepared = None
+        self.error = None
+        self.thread = threading.Thread(target=self._run, args=(brep,), daemon=True)
+
+    def _run(self, brep):
+        _, NurbsLODCoin = _coin()
+        try:
+            self.prepared = NurbsLODCoin.prepare(brep)  # C++ without the GIL
+        except Exception as error:
+            self.error = error
+
+
+def _prepare_in_thread(obj, brep, pixel_error, frame_budget_ms):
+    global _poll_timer
+    from PySide import QtCore
+
+    preparation = _Preparation(obj, brep, pixel_error, frame_budget_ms)
+    _pending[_key(obj)] = preparation
+    FreeCAD.Console.PrintMessage("NurbsLOD: {}: preparing adaptive display...\n".format(obj.Label))
+    preparation.thread.start()
+    if _poll_timer is None:
+        _poll_timer = QtCore.QTimer()
+        _poll_timer.setInterval(50)
+        _poll_timer.timeout.connect(_poll_preparations)
+    if not _poll_timer.isActive():
+        _poll_timer.start()
+
+
+def _poll_preparations():
+    for key, preparation in list(_pending.items()):
+        if preparation.thread.is_alive():
+            continue
+        if _pending.get(key) is preparation:
+            del _pending[key]
+        try:
+            if preparation.error is not None:
+                raise preparation.error
+            _install(preparation.obj, preparation.prepared, *preparation.options)
+        except Exception as error:  # a timer must not raise into FreeCAD
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: {}: adaptive display not enabled, FreeCAD's display kept: {}\n".format(
+                    preparation.label, error
+                )
+            )
+    if not _pending and _poll_timer is not None:
+        _poll_timer.stop()
+
+
+def is_pending(obj):
+    """True while obj's model is being prepared in a thread (enable with wait=False)."""
+    return _key(obj) in _pending
+
+
+def wait_until_ready(obj, seconds=60.0):
+    """Processes GUI events until obj's threaded preparation is installed; returns
+    is_enabled(obj)."""
+    import time
+
+    import FreeCADGui
+
+    end = time.time() + seconds
+    while is_pending(obj) and time.time() < end:
+        FreeCADGui.updateGui()
+        time.sleep(0.02)
+    _poll_preparations()
+    return is_enabled(obj)
+
+
+def _install(obj, prepared, pixel_error, frame_budget_ms):
+    """Puts the nodes of a prepared model into obj's view provider; returns the summary."""
+    if obj.Document is None or getattr(obj, "ViewObject", None) is None:
+        raise RuntimeError("the object was deleted")
     if _key(obj) in _displays:
         disable_adaptive_display(obj)
     coin, NurbsLODCoin = _coin()
@@ -204,7 +302,11 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
     node.ref()
     node.pixelError = pixel_error
     node.frameBudget = frame_budget_ms
-    summary = NurbsLODCoin.set_shape(node, obj.Shape.exportBrepToString())
+    try:
+        summary = NurbsLODCoin.install(node, prepared)
+    except Exception:
+        node.unref()
+        raise
     fallback = _fallback_node(obj, summary["faces_failed"]) if summary["faces_failed"] else None
     inserted_groups = []
     for group, index in groups:
@@ -241,6 +343,7 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None):
 
 def disable_adaptive_display(obj):
     """Gives obj back FreeCAD's own display. Returns False when it was not enabled."""
+    _pending.pop(_key(obj), None)  # a preparation still running is dropped when it ends
     display = _displays.pop(_key(obj), None)
     if display is None:
         return False
@@ -329,9 +432,10 @@ class _ViewObserver:
         obj = view.Object
         try:
             wanted = bool(getattr(view, PROPERTY))
-            if wanted and not is_enabled(obj):
-                enable_adaptive_display(obj)
-            elif not wanted and is_enabled(obj):
+            if wanted and not is_enabled(obj) and not is_pending(obj):
+                # in a thread: a large model must not freeze the GUI while it is imported
+                enable_adaptive_display(obj, wait=False)
+            elif not wanted and (is_enabled(obj) or is_pending(obj)):
                 disable_adaptive_display(obj)
         except Exception as error:  # an observer must not raise into FreeCAD
             FreeCAD.Console.PrintError(

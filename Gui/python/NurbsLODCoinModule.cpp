@@ -76,6 +76,38 @@ py::dict setShape(const py::object& node, const std::string& brep) {
     return out;
 }
 
+// A model imported and given its coarsest levels away from the GUI thread, waiting to be
+// installed into a node.
+struct PreparedModel {
+    std::unique_ptr<FaceLodCache> cache;
+    double seconds = 0;
+};
+
+// The slow part of set_shape (import, every face's coarsest level), without the GIL and
+// without touching Coin, so a Python thread can run it while FreeCAD keeps drawing.
+std::shared_ptr<PreparedModel> prepare(const std::string& brep) {
+    auto prepared = std::make_shared<PreparedModel>();
+    py::gil_scoped_release release;
+    const auto start = Clock::now();
+    auto model = std::make_shared<const Model>(occ::importModel(occ::shapeFromBrepString(brep)));
+    if (model->faces.empty()) throw std::invalid_argument("the shape has no faces to display");
+    prepared->cache = std::make_unique<FaceLodCache>(std::move(model));
+    prepared->seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return prepared;
+}
+
+// Gives the node a prepared model (in the GUI thread: it touches the scene graph).
+py::dict install(const py::object& node, PreparedModel& prepared) {
+    SoNurbsLODShape* shape = nodeOf(node);
+    if (!prepared.cache) throw py::value_error("NurbsLODCoin: this model was installed already");
+    shape->setCache(std::move(prepared.cache));
+    py::dict out;
+    out["faces"] = shape->cache()->faceCount();
+    out["faces_failed"] = failureList(*shape->cache());
+    out["seconds"] = prepared.seconds;
+    return out;
+}
+
 py::dict stats(const py::object& node) {
     SoNurbsLODShape* shape = nodeOf(node);
     const FrameStats s = shape->stats();
@@ -218,6 +250,14 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
     m.def("set_shape", &setShape, py::arg("node"), py::arg("brep"),
           "Gives the node the model of shape.exportBrepToString(); returns {faces, "
           "faces_failed: [{face, reason}], seconds}.");
+    py::class_<PreparedModel, std::shared_ptr<PreparedModel>>(
+        m, "PreparedModel", "A model imported with its coarsest levels, for install().");
+    m.def("prepare", &prepare, py::arg("brep"),
+          "Imports shape.exportBrepToString() and makes every face's coarsest level, without "
+          "the GIL and without touching Coin (run it in a thread); returns a PreparedModel.");
+    m.def("install", &install, py::arg("node"), py::arg("prepared"),
+          "Gives the node a PreparedModel (in the GUI thread); returns {faces, faces_failed: "
+          "[{face, reason}], seconds}.");
     m.def("stats", &stats, py::arg("node"),
           "What the node's last frame drew: triangles, max_screen_error_px, "
           "last_frame_tessellation_ms, faces_visible, faces_culled, faces_failed, "

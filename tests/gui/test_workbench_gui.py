@@ -38,16 +38,25 @@ class AdaptiveDisplayCommand(unittest.TestCase):
         import NurbsLODAdaptiveCommand
 
         FreeCADGui.runCommand(NurbsLODAdaptiveCommand.COMMAND_NAME)
-        self.assertTrue(NurbsLODGui.is_enabled(self.obj))
+        # the command imports in a thread: FreeCAD's display stays until the swap
+        self.assertTrue(NurbsLODGui.is_pending(self.obj) or NurbsLODGui.is_enabled(self.obj))
+        self.assertTrue(NurbsLODGui.wait_until_ready(self.obj))
         self.assertIn("Adaptive display on", self.document.UndoNames)
         self.document.undo()
         self.assertFalse(NurbsLODGui.is_enabled(self.obj))
+        self.assertFalse(NurbsLODGui.is_pending(self.obj))
         self.document.redo()
-        self.assertTrue(NurbsLODGui.is_enabled(self.obj))
+        self.assertTrue(NurbsLODGui.wait_until_ready(self.obj))
         FreeCADGui.runCommand(NurbsLODAdaptiveCommand.COMMAND_NAME)
         self.assertFalse(NurbsLODGui.is_enabled(self.obj))
         self.document.undo()
-        self.assertTrue(NurbsLODGui.is_enabled(self.obj))
+        self.assertTrue(NurbsLODGui.wait_until_ready(self.obj))
+        # undone before the import finished: the display never swaps
+        self.document.undo()
+        self.document.redo()
+        self.document.undo()
+        self.assertFalse(NurbsLODGui.wait_until_ready(self.obj))
+        self.assertFalse(NurbsLODGui.is_enabled(self.obj))
         NurbsLODGui.disable_adaptive_display(self.obj)
 
 
