@@ -128,9 +128,18 @@ int FaceLodCache::collectFinished() {
             // at the finest level that worked: it is still drawn, and not asked for again.
             state.failedLevel = state.failedLevel < 0 ? finished.level
                                                       : std::min(state.failedLevel, finished.level);
+            levelFailures_.push_back(
+                {finished.face + 1, "level " + std::to_string(finished.level) +
+                                        " failed: " + finished.result.failure});
         }
     }
     return count;
+}
+
+std::vector<FaceLodCache::Failure> FaceLodCache::takeLevelFailures() {
+    std::vector<Failure> taken;
+    taken.swap(levelFailures_);
+    return taken;
 }
 
 bool FaceLodCache::waitForFinished(Clock::time_point deadline) {

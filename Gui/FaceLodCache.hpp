@@ -64,6 +64,8 @@ public:
 
     // Moves finished levels into the caches; returns how many arrived.
     int collectFinished();
+    // Finer levels that failed since the last call (the face keeps its finest good level).
+    std::vector<Failure> takeLevelFailures();
     // Waits until every pending job finished or the deadline passed; true when levels wait
     // to be collected.
     bool waitForFinished(std::chrono::steady_clock::time_point deadline);
@@ -104,6 +106,7 @@ private:
     mutable std::mutex finishedMutex_;
     std::condition_variable finishedChanged_;
     std::vector<Finished> finished_;
+    std::vector<Failure> levelFailures_;  // rendering thread only
     std::atomic<int> pending_{0};
     std::atomic<bool> cancelled_{false};
     std::atomic<long long> workerMicroseconds_{0};

@@ -25,6 +25,8 @@
 
 SO_NODE_SOURCE(SoNurbsLODShape);
 
+std::function<void(const std::string&)> SoNurbsLODShape::reportError;
+
 namespace {
 using Clock = std::chrono::steady_clock;
 using nurbslod::gui::FaceLod;
@@ -108,11 +110,21 @@ void SoNurbsLODShape::GLRender(SoGLRenderAction* action) {
     try {
         render(action);
     } catch (const Standard_Failure& failure) {
-        lastError_ = std::string("OpenCASCADE failed: ") + failure.GetMessageString();
+        report(std::string("OpenCASCADE failed while drawing: ") + failure.GetMessageString());
     } catch (const std::exception& error) {
-        lastError_ = error.what();
+        report(std::string("error while drawing: ") + error.what());
     } catch (...) {
-        lastError_ = "unknown error while drawing";
+        report("unknown error while drawing");
+    }
+}
+
+void SoNurbsLODShape::report(const std::string& message) {
+    if (message == lastError_) return;  // once, not every frame
+    lastError_ = message;
+    if (!reportError) return;
+    try {
+        reportError(message);
+    } catch (...) {  // the report itself must not take the viewer down
     }
 }
 
@@ -185,6 +197,9 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
         if (cache_->waitForFinished(deadline)) cache_->collectFinished();
     }
     cache_->collectFinished();
+    for (const auto& failure : cache_->takeLevelFailures())
+        report("face " + std::to_string(failure.face) + ": " + failure.reason +
+               "; it keeps its finest good level");
     frame.lastFrameTessellationMs =
         std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
     frame.lastFrameTessellationCpuMs = threadCpuMilliseconds() - frameCpuStart;

@@ -4,6 +4,7 @@
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/nodes/SoShape.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +57,10 @@ public:
     static void initClass();
     SoNurbsLODShape();
 
+    // Where the nodes report what went wrong while drawing (the Python module sends it to
+    // FreeCAD's report view); called in the rendering thread. Empty: not reported.
+    static std::function<void(const std::string&)> reportError;
+
     SoSFFloat pixelError;   // allowed screen-space error in pixels (0.5)
     SoSFFloat frameBudget;  // milliseconds a frame may spend on LOD work (20)
     // 1-based faces this node does not draw: the selected and pre-selected ones, which
@@ -97,6 +102,7 @@ protected:
 
 private:
     void render(SoGLRenderAction* action);
+    void report(const std::string& message);
     static void redrawCheck(void* data, SoSensor* sensor);
 
     std::unique_ptr<nurbslod::gui::FaceLodCache> cache_;

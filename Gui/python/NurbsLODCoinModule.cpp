@@ -245,6 +245,16 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
     if (!SoDB::isInitialized()) SoDB::init();
     SoNurbsLODShape::initClass();
     SoNurbsLODEdges::initClass();
+    // The report view, through FreeCAD's Python console (FreeCAD ships no C++ headers).
+    SoNurbsLODShape::reportError = [](const std::string& message) {
+        if (!Py_IsInitialized()) return;  // FreeCAD is shutting down
+        py::gil_scoped_acquire gil;
+        try {
+            py::module_::import("FreeCAD").attr("Console").attr("PrintWarning")(
+                "NurbsLOD: " + message + "\n");
+        } catch (py::error_already_set&) {  // outside FreeCAD: nowhere to report
+        }
+    };
     translateFailures();
 
     m.def("set_shape", &setShape, py::arg("node"), py::arg("brep"),
