@@ -173,6 +173,41 @@ class SwapKeepsSelection(unittest.TestCase):
         # FreeCAD's own display covers about as much of the view as the node did
         self.assertLess(abs(freecad - with_node), 0.05 * with_node)
 
+    def test_a_shader_bound_before_the_node_applies_to_it(self):
+        # what an analysis overlay does: an SoShaderProgram ahead of the node in its group
+        # shades the node's client-array triangles, here with the normal's z as red
+        from pivy import coin
+
+        NurbsLODGui.enable_adaptive_display(self.obj)
+        display = NurbsLODGui._displays[(self.document.Name, self.obj.Name)]
+        group, _ = display.groups[0]
+        vertex = coin.SoVertexShader()
+        vertex.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+        vertex.sourceProgram = (
+            "#version 120\nvarying vec3 n;\n"
+            "void main() { n = gl_Normal; gl_Position = ftransform(); }\n")
+        fragment = coin.SoFragmentShader()
+        fragment.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+        fragment.sourceProgram = (
+            "#version 120\nvarying vec3 n;\n"
+            "void main() { gl_FragColor = vec4(1.0, 0.0, 0.5 + 0.5 * normalize(n).z, 1.0); }\n")
+        program = coin.SoShaderProgram()
+        program.shaderObject.setValues(0, 2, [vertex, fragment])
+        group.insertChild(program, group.findChild(display.node))
+        self.addCleanup(lambda: group.removeChild(group.findChild(program)))
+        gt.settle(self.view, self.obj)
+        path = gt.screenshot(self.view, "shader-on-node")
+        from PySide import QtGui
+
+        image = QtGui.QImage(path)
+        red = 0
+        for y in range(0, image.height(), 2):
+            for x in range(0, image.width(), 2):
+                color = QtGui.QColor(image.pixel(x, y))
+                if color.red() > 200 and color.green() < 40:
+                    red += 1
+        self.assertGreater(red, 1000)
+
     def test_bad_arguments_raise_and_keep_freecad_display(self):
         for bad in (0, -1, float("nan"), float("inf"), "x"):
             with self.assertRaises(ValueError):
