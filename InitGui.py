@@ -13,8 +13,13 @@ class NurbsLODWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench he
     def Initialize(self):
         import NurbsLODAdaptiveCommand
         import NurbsLODExportCommand
+        import NurbsLODPoleEditor
 
-        commands = [NurbsLODAdaptiveCommand.COMMAND_NAME, NurbsLODExportCommand.COMMAND_NAME]
+        commands = [
+            NurbsLODAdaptiveCommand.COMMAND_NAME,
+            NurbsLODPoleEditor.COMMAND_NAME,
+            NurbsLODExportCommand.COMMAND_NAME,
+        ]
         self.appendToolbar("NurbsLOD", commands)
         self.appendMenu("NurbsLOD", commands)
 
