@@ -60,7 +60,9 @@ def _positive(value, name):
     except (TypeError, ValueError):
         raise ValueError("NurbsLOD: {} must be a number, got {!r}".format(name, value)) from None
     if not (math.isfinite(number) and number > 0):
-        raise ValueError("NurbsLOD: {} must be a positive finite number, got {!r}".format(name, value))
+        raise ValueError(
+            "NurbsLOD: {} must be a positive finite number, got {!r}".format(name, value)
+        )
     return number
 
 
@@ -186,10 +188,12 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=Tr
     is_pending) and None is returned. Raises ValueError for an object without faces or a bad
     argument; the object then keeps FreeCAD's display.
     """
-    pixel_error = _positive(pixel_error if pixel_error is not None else default_pixel_error(), "pixel_error")
-    frame_budget_ms = _positive(
-        frame_budget_ms if frame_budget_ms is not None else default_frame_budget_ms(), "frame_budget_ms"
-    )
+    if pixel_error is None:
+        pixel_error = default_pixel_error()
+    if frame_budget_ms is None:
+        frame_budget_ms = default_frame_budget_ms()
+    pixel_error = _positive(pixel_error, "pixel_error")
+    frame_budget_ms = _positive(frame_budget_ms, "frame_budget_ms")
     if not hasattr(obj, "Shape") or obj.Shape.isNull() or not obj.Shape.Faces:
         raise ValueError("NurbsLOD: {} has no faces to display".format(getattr(obj, "Label", obj)))
     if obj.ViewObject is None:
@@ -478,7 +482,8 @@ def _update_hidden_faces(document_name, object_name):
     except Exception as error:  # an observer must not raise into FreeCAD
         FreeCAD.Console.PrintWarning("NurbsLOD: selection update failed: {}\n".format(error))
         return
-    current = list(display.node.hiddenFaces.getValues()) if display.node.hiddenFaces.getNum() else []
+    hidden = display.node.hiddenFaces
+    current = list(hidden.getValues()) if hidden.getNum() else []
     if current != faces:
         display.node.hiddenFaces.setNum(0)
         if faces:
@@ -567,7 +572,9 @@ def _finite_vector(vector):
     except (TypeError, ValueError, IndexError):
         values = [float(getattr(vector, name, float("nan"))) for name in ("x", "y", "z")]
     if not all(math.isfinite(v) for v in values):
-        raise ValueError("NurbsLOD: the pole position must be three finite numbers, got {!r}".format(vector))
+        raise ValueError(
+            "NurbsLOD: the pole position must be three finite numbers, got {!r}".format(vector)
+        )
     return FreeCAD.Vector(*values)
 
 
@@ -623,14 +630,17 @@ def move_pole(obj, face_index, i, j, vector):
     start = time.perf_counter()
     if getattr(obj, "TypeId", None) != "Part::Feature":
         raise ValueError(
-            "NurbsLOD: {} is a {}, not a plain Part::Feature: a recompute would undo the edit".format(
+            "NurbsLOD: {} is a {}, not a plain Part::Feature: a recompute would undo the "
+            "edit".format(
                 getattr(obj, "Label", obj), getattr(obj, "TypeId", type(obj).__name__)
             )
         )
     shape = obj.Shape
     if not isinstance(face_index, int) or not 1 <= face_index <= len(shape.Faces):
         raise ValueError(
-            "NurbsLOD: {} has faces 1 to {}, not {!r}".format(obj.Label, len(shape.Faces), face_index)
+            "NurbsLOD: {} has faces 1 to {}, not {!r}".format(
+                obj.Label, len(shape.Faces), face_index
+            )
         )
     face = shape.Faces[face_index - 1]
     surface = face.Surface

@@ -107,7 +107,8 @@ class PoleEditor:
         )
         self.poles[i - 1][j - 1] = position
         self.moved.add((i, j))
-        self.coordinates.point.set1Value((i - 1) * columns + (j - 1), position.x, position.y, position.z)
+        index = (i - 1) * columns + (j - 1)
+        self.coordinates.point.set1Value(index, position.x, position.y, position.z)
         self.timings.append(timing)
         return timing
 
@@ -267,7 +268,9 @@ class EditPoles:
             _active.listen()
         except Exception as error:  # a command must not raise: tell the user instead
             _active = None
-            FreeCAD.Console.PrintError("NurbsLOD: cannot edit the control points: {}\n".format(error))
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: cannot edit the control points: {}\n".format(error)
+            )
 
 
 if FreeCAD.GuiUp:

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test of NurbsLOD: builds build/ if needed (incrementally), then the GoogleTest
 # unit tests (ctest), the Python tests (tests/python, in freecadcmd, headless; they
-# include the command-line bad-input checks) and the GUI tests (tests/gui, the real FreeCAD
-# GUI under Xvfb; skipped, and counted so, without xvfb-run). Ends with the line "N passed, N failed,
-# N skipped" and exits non-zero when anything failed.
+# include the command-line bad-input checks) and the GUI tests (tests/gui, the real
+# FreeCAD GUI under Xvfb; skipped, and counted so, without xvfb-run). Ends with the line
+# "N passed, N failed, N skipped" and exits non-zero when anything failed.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -97,7 +97,8 @@ def _run():
             box = shape.BoundBox
             shape.translate(FreeCAD.Vector(x - box.XMin, -box.Center.y, -box.Center.z))
             x += box.XLength * 1.1
-            obj = document.addObject("Part::Feature", os.path.splitext(os.path.basename(path))[0].replace("-", "_"))
+            name = os.path.splitext(os.path.basename(path))[0].replace("-", "_")
+            obj = document.addObject("Part::Feature", name)
             obj.Shape = shape
             objects.append(obj)
         document.recompute()
@@ -137,7 +138,7 @@ def _run():
                   len(objects), faces, view.getSize()[1], STEPS, enable_s, failed))
         print("| {:<40} | {:>8} | {:>8} | {:>8} | {:<28} |".format(
             "milliseconds per frame", "mean", "median", "max", "last frame"))
-        print("|" + "-" * 42 + "|" + "-" * 10 + "|" + "-" * 10 + "|" + "-" * 10 + "|" + "-" * 30 + "|")
+        print("|" + "|".join("-" * width for width in (42, 10, 10, 10, 30)) + "|")
         print(_row("FreeCAD's own display", own))
         print(_row("adaptive display, first pass (refining)", cold,
                    "{} triangles".format(triangles_cold)))

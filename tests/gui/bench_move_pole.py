@@ -38,12 +38,14 @@ def _moves(obj, count, view=None):
     import gui_testing as gt
     import NurbsLODGui
 
-    times = {"node": [], "import": [], "tessellate": [], "total": [], "settled": [], "triangles": []}
+    names = ("node", "import", "tessellate", "total", "settled", "triangles")
+    times = {name: [] for name in names}
     for k in range(count):
         i, j = 3 + (k * 7) % 14, 3 + (k * 5) % 14
         pole = obj.Shape.Faces[0].Surface.getPole(i, j)
         start = time.perf_counter()
-        result = NurbsLODGui.move_pole(obj, 1, i, j, pole + FreeCAD.Vector(0, 0, 2.0 if k % 2 else -2.0))
+        step = FreeCAD.Vector(0, 0, 2.0 if k % 2 else -2.0)
+        result = NurbsLODGui.move_pole(obj, 1, i, j, pole + step)
         times["total"].append(result["total_ms"])
         if result["display"] is not None:
             times["node"].append(result["display"]["total_ms"])

@@ -56,7 +56,8 @@ def _run():
         loader = unittest.TestLoader()
         # NURBSLOD_GUI_TESTS="zoom selection": only the tests whose names contain one of these
         if os.environ.get("NURBSLOD_GUI_TESTS"):
-            loader.testNamePatterns = ["*{}*".format(p) for p in os.environ["NURBSLOD_GUI_TESTS"].split()]
+            names = os.environ["NURBSLOD_GUI_TESTS"].split()
+            loader.testNamePatterns = ["*{}*".format(name) for name in names]
         suite = loader.discover(HERE, pattern="test_*.py", top_level_dir=HERE)
         result = unittest.TextTestRunner(stream=sys.stdout, verbosity=2).run(suite)
         skipped = len(result.skipped)
