@@ -151,6 +151,14 @@ def _fallback_node(obj, failures):
                 )
             )
             continue
+        if not triangles:
+            # OpenCASCADE's mesher, which FreeCAD's own display uses, leaves some faces of
+            # sloppy files empty: FreeCAD showed nothing there either
+            FreeCAD.Console.PrintWarning(
+                "NurbsLOD: {}: FreeCAD's own mesh of face {} is empty too: it is not "
+                "drawn\n".format(obj.Label, failure["face"])
+            )
+            continue
         base = len(points)
         points.extend((v.x, v.y, v.z) for v in vertices)
         for a, b, c in triangles:

@@ -34,6 +34,18 @@ class ZoomCase:
         self.addCleanup(gt.close, document)
         summary = NurbsLODGui.enable_adaptive_display(obj)
         self.assertEqual(summary["faces"], len(obj.Shape.Faces))
+        # faces the tessellator cannot handle keep FreeCAD's own mesh, drawn beside the node
+        display = NurbsLODGui._displays[(document.Name, obj.Name)]
+        group, inserted = display.groups[0]
+        for failure in summary["faces_failed"]:
+            self.assertTrue(failure["reason"])
+            self.assertTrue(1 <= failure["face"] <= len(obj.Shape.Faces))
+        deviation = max(obj.Shape.BoundBox.DiagonalLength * 1e-3, 1e-6)
+        freecad_triangles = sum(
+            len(obj.Shape.Faces[failure["face"] - 1].tessellate(deviation)[1])
+            for failure in summary["faces_failed"])
+        # node, FreeCAD's mesh of the failed faces where it has one, the hiding draw style
+        self.assertEqual(len(inserted), 3 if freecad_triangles else 2)
         view.fitAll()
         budget = NurbsLODGui.stats(obj)["frame_budget_ms"]
 
