@@ -133,15 +133,27 @@ def _face_set_groups(view_object, type_name="SoBrepFaceSet"):
     return found
 
 
+def local_shape(obj):
+    """obj's shape without its placement: the coordinates the view provider's nodes live in
+    (its transform node applies obj.Placement to them)."""
+    try:
+        shape = obj.Shape.copy(False)  # shares the geometry
+    except TypeError:
+        shape = obj.Shape.copy()
+    shape.Placement = FreeCAD.Placement()
+    return shape
+
+
 def _fallback_node(obj, failures):
     """FreeCAD's own mesh of the faces the tessellator could not handle, not pickable (the
     face set still answers picks for them)."""
     coin, _ = _coin()
     points = []
     indices = []
-    deviation = max(obj.Shape.BoundBox.DiagonalLength * 1e-3, 1e-6)
+    shape = local_shape(obj)
+    deviation = max(shape.BoundBox.DiagonalLength * 1e-3, 1e-6)
     for failure in failures:
-        face = obj.Shape.Faces[failure["face"] - 1]
+        face = shape.Faces[failure["face"] - 1]
         try:
             vertices, triangles = face.tessellate(deviation)
         except Exception as error:  # the face shows nothing, but say so
@@ -209,7 +221,7 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=Tr
     if not _face_set_groups(obj.ViewObject):
         raise RuntimeError("NurbsLOD: {} has no face set in its view provider".format(obj.Label))
     _, NurbsLODCoin = _coin()
-    brep = obj.Shape.exportBrepToString()
+    brep = local_shape(obj).exportBrepToString()
     if wait:
         _pending.pop(_key(obj), None)
         return _install(obj, NurbsLODCoin.prepare(brep), pixel_error, frame_budget_ms)
@@ -392,7 +404,7 @@ def refresh(obj):
     """Re-reads obj's shape into its node (after a recompute changed it)."""
     display = _display_of(obj)
     _, NurbsLODCoin = _coin()
-    summary = NurbsLODCoin.set_shape(display.node, obj.Shape.exportBrepToString())
+    summary = NurbsLODCoin.set_shape(display.node, local_shape(obj).exportBrepToString())
     report_failures(obj, summary["faces_failed"])
     return summary
 
@@ -622,7 +634,9 @@ def _face_on_surface(face, surface):
 
 def move_pole(obj, face_index, i, j, vector):
     """Moves pole (i, j) (1-based, as Part.BSplineSurface counts) of face face_index
-    (1-based, obj.Shape.Faces[face_index - 1]) to vector, in one undoable transaction.
+    (1-based, obj.Shape.Faces[face_index - 1]) to vector (document coordinates, as
+    obj.Shape.Faces[face_index - 1].Surface.getPole(i, j) gives them), in one undoable
+    transaction.
 
     With adaptive display on, only that face is tessellated again: at once at the coarsest
     level (paper out-of-core-lod 6.4), then by the workers at the level the view needs.
@@ -643,7 +657,10 @@ def move_pole(obj, face_index, i, j, vector):
                 getattr(obj, "Label", obj), getattr(obj, "TypeId", type(obj).__name__)
             )
         )
-    shape = obj.Shape
+    # the edit happens without the placement (the nodes' coordinates), which the new shape
+    # gets back at the end
+    placement = obj.Placement
+    shape = local_shape(obj)
     if not isinstance(face_index, int) or not 1 <= face_index <= len(shape.Faces):
         raise ValueError(
             "NurbsLOD: {} has faces 1 to {}, not {!r}".format(
@@ -666,7 +683,7 @@ def move_pole(obj, face_index, i, j, vector):
                 obj.Label, face_index, surface.NbUPoles, surface.NbVPoles, i, j
             )
         )
-    position = _finite_vector(vector)
+    position = placement.inverse().multVec(_finite_vector(vector))
     new_surface = surface.copy()
     new_surface.setPole(i, j, position)
     new_face = _face_on_surface(face, new_surface)
@@ -674,6 +691,7 @@ def move_pole(obj, face_index, i, j, vector):
         new_shape = new_face
     else:
         new_shape = shape.replaceShape([(face, new_face)])
+    new_shape.Placement = placement
 
     global _editing
     node_update = None

@@ -39,9 +39,11 @@ class PoleEditor:
         import Part
         from pivy import coin
 
-        if not 1 <= face_index <= len(obj.Shape.Faces):
+        # poles in the shape's own coordinates (the nodes'); the net gets obj's placement
+        shape = NurbsLODGui.local_shape(obj)
+        if not 1 <= face_index <= len(shape.Faces):
             raise ValueError("NurbsLOD: {} has no face {}".format(obj.Label, face_index))
-        surface = obj.Shape.Faces[face_index - 1].Surface
+        surface = shape.Faces[face_index - 1].Surface
         if not isinstance(surface, Part.BSplineSurface):
             raise ValueError(
                 "NurbsLOD: {} face {} is a {}, not a B-spline surface: convert it first".format(
@@ -59,7 +61,12 @@ class PoleEditor:
         self.timings = []
 
         # the net: poles as points, rows and columns as lines, always on top of nothing else
+        self.placement = obj.Placement
         self.root = coin.SoSeparator()
+        transform = coin.SoTransform()
+        base, rotation = self.placement.Base, self.placement.Rotation.Q
+        transform.translation.setValue(base.x, base.y, base.z)
+        transform.rotation.setValue(rotation[0], rotation[1], rotation[2], rotation[3])
         pick = coin.SoPickStyle()
         pick.style = coin.SoPickStyle.UNPICKABLE
         material = coin.SoMaterial()
@@ -77,7 +84,7 @@ class PoleEditor:
             lines.extend([i * columns + j for i in range(rows)] + [-1])
         net = coin.SoIndexedLineSet()
         net.coordIndex.setValues(0, len(lines), lines)
-        for child in (pick, material, style, self.coordinates, coin.SoPointSet(), net):
+        for child in (transform, pick, material, style, self.coordinates, coin.SoPointSet(), net):
             self.root.addChild(child)
         self.dragger = None
         self.dragged = None
@@ -89,8 +96,17 @@ class PoleEditor:
         self.coordinates.point.setValues(0, len(flat), flat)
 
     def move(self, i, j, position):
-        """Moves pole (i, j) (1-based) to position: the node shows the new face at once, the
-        document is not changed until finish(). Returns the node's timings."""
+        """Moves pole (i, j) (1-based) to position (document coordinates): the node shows the
+        new face at once, the document is not changed until finish(). Returns the node's
+        timings."""
+        position = self.placement.inverse().multVec(NurbsLODGui._finite_vector(position))
+        return self._move_local(i, j, position)
+
+    def pole(self, i, j):
+        """Pole (i, j) (1-based) as it is now, in document coordinates."""
+        return self.placement.multVec(self.poles[i - 1][j - 1])
+
+    def _move_local(self, i, j, position):
         import NurbsLODCoin
 
         position = NurbsLODGui._finite_vector(position)
@@ -130,8 +146,8 @@ class PoleEditor:
         if self.dragged is None:
             return
         x, y, z = dragger.translation.getValue().getValue()
-        try:
-            self.move(self.dragged[0], self.dragged[1], FreeCAD.Vector(x, y, z))
+        try:  # the dragger sits under the net's transform: shape coordinates
+            self._move_local(self.dragged[0], self.dragged[1], FreeCAD.Vector(x, y, z))
         except Exception as error:  # a callback must not raise into Coin
             FreeCAD.Console.PrintError("NurbsLOD: pole not moved: {}\n".format(error))
 
@@ -146,7 +162,7 @@ class PoleEditor:
         best, best_distance = None, GRAB_RADIUS_PX
         for i, row in enumerate(self.poles, 1):
             for j, pole in enumerate(row, 1):
-                px, py = self.view.getPointOnScreen(pole)
+                px, py = self.view.getPointOnScreen(self.placement.multVec(pole))
                 distance = ((px - x) ** 2 + (py - y) ** 2) ** 0.5
                 if distance <= best_distance:
                     best, best_distance = (i, j), distance
@@ -157,7 +173,7 @@ class PoleEditor:
         self._close()
         if not self.moved:
             return False
-        shape = self.obj.Shape
+        shape = NurbsLODGui.local_shape(self.obj)
         face = shape.Faces[self.face_index - 1]
         surface = face.Surface.copy()
         for i, j in sorted(self.moved):
@@ -166,6 +182,7 @@ class PoleEditor:
         new_shape = new_face if len(shape.Faces) == 1 and shape.ShapeType == "Face" else (
             shape.replaceShape([(face, new_face)])
         )
+        new_shape.Placement = self.placement
         document = self.obj.Document
         document.openTransaction("Edit control points")
         NurbsLODGui._editing = True  # the node shows the new face already

@@ -12,19 +12,23 @@ import NurbsLODPoleEditor
 
 
 class PoleEditing(unittest.TestCase):
+    placement = FreeCAD.Placement()
+
     def setUp(self):
         self.document = FreeCAD.newDocument("Poles")
         self.addCleanup(gt.close, self.document)
         self.document.UndoMode = 1
         self.obj = self.document.addObject("Part::Feature", "Patch")
         self.obj.Shape = gt.bicubic_face(20)
+        self.obj.Placement = self.placement
         self.document.recompute()
         self.view = FreeCADGui.getDocument(self.document.Name).activeView()
         self.view.viewIsometric()
         self.view.fitAll()
         NurbsLODGui.enable_adaptive_display(self.obj)
         gt.settle(self.view, self.obj)
-        self.original = self.obj.Shape.Faces[0].Surface.getPoles()
+        self.original = self.obj.Shape.Faces[0].Surface.getPoles()  # document coordinates
+        self.original_local = NurbsLODGui.local_shape(self.obj).Faces[0].Surface.getPoles()
 
     def lifted(self, i, j, height=30.0):
         return self.original[i - 1][j - 1] + FreeCAD.Vector(0, 0, height)
@@ -49,10 +53,13 @@ class PoleEditing(unittest.TestCase):
         self.assertEqual(self.document.UndoCount, undo_count + 1)
         self.assertEqual(self.document.UndoNames[0], "Edit control points")
         surface = self.obj.Shape.Faces[0].Surface
-        self.assertEqual(surface.getPole(10, 10), self.lifted(10, 10))
-        self.assertEqual(surface.getPole(5, 15), self.lifted(5, 15, 20.0))
+        self.assertLess((surface.getPole(10, 10) - self.lifted(10, 10)).Length, 1e-9)
+        self.assertLess((surface.getPole(5, 15) - self.lifted(5, 15, 20.0)).Length, 1e-9)
+        for kept, given in zip(self.obj.Placement.toMatrix().A, self.placement.toMatrix().A):
+            self.assertAlmostEqual(kept, given, delta=1e-12)  # the placement is kept
         self.document.undo()
-        self.assertEqual(self.obj.Shape.Faces[0].Surface.getPoles(), self.original)
+        self.assertEqual(
+            NurbsLODGui.local_shape(self.obj).Faces[0].Surface.getPoles(), self.original_local)
 
     def test_cancel_puts_the_node_back_and_leaves_the_document(self):
         before = NurbsLODGui.face_bounds(self.obj, 1)
@@ -66,7 +73,8 @@ class PoleEditing(unittest.TestCase):
             self.assertAlmostEqual(after[0][k], before[0][k], delta=1e-6)
             self.assertAlmostEqual(after[1][k], before[1][k], delta=1e-6)
         self.assertEqual(self.document.UndoCount, undo_count)
-        self.assertEqual(self.obj.Shape.Faces[0].Surface.getPoles(), self.original)
+        self.assertEqual(
+            NurbsLODGui.local_shape(self.obj).Faces[0].Surface.getPoles(), self.original_local)
         self.assertEqual(self.view.getSceneGraph().findChild(editor.root), -1)
 
     def test_a_dragged_pole_moves_live(self):
@@ -77,8 +85,9 @@ class PoleEditing(unittest.TestCase):
         self.assertEqual(editor.pole_at(x, y), (7, 8))
         dragger = editor.grab(7, 8)
         target = self.lifted(7, 8)
-        dragger.translation.setValue(target.x, target.y, target.z)
-        self.assertLess((editor.poles[6][7] - target).Length, 1e-4)  # the dragger is float
+        local = self.placement.inverse().multVec(target)  # the dragger is under the net's
+        dragger.translation.setValue(local.x, local.y, local.z)  # transform
+        self.assertLess((editor.pole(7, 8) - target).Length, 1e-4)  # the dragger is float
         self.assertTrue(editor.timings)
         self.assertIn((7, 8), editor.moved)
 
@@ -107,7 +116,17 @@ class PoleEditing(unittest.TestCase):
         editor.move(10, 10, self.lifted(10, 10))
         FreeCADGui.runCommand(NurbsLODPoleEditor.COMMAND_NAME)  # again: keep the edit
         self.assertIsNone(NurbsLODPoleEditor._active)
-        self.assertEqual(self.obj.Shape.Faces[0].Surface.getPole(10, 10), self.lifted(10, 10))
+        moved = self.obj.Shape.Faces[0].Surface.getPole(10, 10)
+        self.assertLess((moved - self.lifted(10, 10)).Length, 1e-9)
+
+
+
+class PlacedPoleEditing(PoleEditing):
+    """The same on an object with a placement: the nodes live in the shape's own coordinates,
+    the net and the macro arguments in the document's."""
+
+    placement = FreeCAD.Placement(
+        FreeCAD.Vector(50, -20, 10), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 30))
 
 
 if __name__ == "__main__":
