@@ -11,9 +11,15 @@ class NurbsLODWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench he
     del NurbsLODPaths
 
     def Initialize(self):
+        import NurbsLODAdaptiveCommand
         import NurbsLODExportCommand
+        import NurbsLODPoleEditor
 
-        commands = [NurbsLODExportCommand.COMMAND_NAME]
+        commands = [
+            NurbsLODAdaptiveCommand.COMMAND_NAME,
+            NurbsLODPoleEditor.COMMAND_NAME,
+            NurbsLODExportCommand.COMMAND_NAME,
+        ]
         self.appendToolbar("NurbsLOD", commands)
         self.appendMenu("NurbsLOD", commands)
 
@@ -21,4 +27,18 @@ class NurbsLODWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench he
         return "Gui::PythonWorkbench"
 
 
+def _nurbslod_preferences():
+    # Edit > Preferences > NurbsLOD: the .ui's Gui::Pref* widgets read and write
+    # User parameter:BaseApp/Preferences/Mod/NurbsLOD themselves.
+    import os
+
+    import NurbsLODPaths
+
+    page = os.path.join(NurbsLODPaths.ROOT, "Resources", "ui", "NurbsLODPreferences.ui")
+    Gui.addPreferencePage(page, "NurbsLOD")  # noqa: F821
+    Gui.addIconPath(os.path.join(NurbsLODPaths.ROOT, "Resources", "icons"))  # noqa: F821
+
+
 Gui.addWorkbench(NurbsLODWorkbench())  # noqa: F821 (FreeCAD provides Gui here)
+_nurbslod_preferences()
+del _nurbslod_preferences

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test of NurbsLOD: builds build/ if needed (incrementally), then the GoogleTest
-# unit tests (ctest) and the Python tests (tests/python, in freecadcmd, headless; they
-# include the command-line bad-input checks). Ends with the line "N passed, N failed,
-# N skipped" and exits non-zero when anything failed.
+# unit tests (ctest), the Python tests (tests/python, in freecadcmd, headless; they
+# include the command-line bad-input checks) and the GUI tests (tests/gui, the real
+# FreeCAD GUI under Xvfb; skipped, and counted so, without xvfb-run). Ends with the line
+# "N passed, N failed, N skipped" and exits non-zero when anything failed.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -99,5 +100,33 @@ add_counts "$WORK/python.counts" 2>/dev/null || {
     echo "test: the Python tests ended without a report (crash or time-out)" >&2
     failed=$((failed + 1))
 }
+
+say "GUI tests (FreeCAD GUI under Xvfb)"
+# The real GUI: adaptive display, picking through it, screenshots in out/gui-screenshots.
+# Software GL (llvmpipe) is slow: the scenes are small and the whole stage takes about a
+# minute. Without xvfb-run or the freecad program it is one skipped test, not a failure.
+if ! command -v xvfb-run >/dev/null || ! command -v freecad >/dev/null; then
+    echo "test: GUI tests skipped: xvfb-run or freecad is not installed"
+    skipped=$((skipped + 1))
+else
+    (
+        cd "$WORK" &&
+            env -u XDG_DATA_HOME -u XDG_CONFIG_HOME -u XDG_CACHE_HOME HOME="$home" \
+                NURBSLOD_BUILD_DIR="$BUILD_DIR" NURBSLOD_TEST_RESULTS="$WORK/gui.counts" \
+                NURBSLOD_SCREENSHOT_DIR="$ROOT/out/gui-screenshots" \
+                QTWEBENGINE_CHROMIUM_FLAGS="--no-sandbox --disable-gpu" \
+                timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" \
+                freecad "$ROOT/tests/gui/run_gui_tests.py" </dev/null
+    ) | grep -v -E '^ *(#|$)'
+    if [ -f "$WORK/gui.counts" ]; then
+        add_counts "$WORK/gui.counts"
+    elif [ -z "${DISPLAY:-}" ] && ! xvfb-run -a true 2>/dev/null; then
+        echo "test: GUI tests skipped: xvfb-run cannot start a display"
+        skipped=$((skipped + 1))
+    else
+        echo "test: the GUI tests ended without a report (crash or time-out)" >&2
+        failed=$((failed + 1))
+    fi
+fi
 
 finish

@@ -11,7 +11,7 @@ import NurbsLOD
 import NurbsLODPaths
 from nurbslod_testing import BUILD_DIR, ROOT
 
-PACKAGE_XML = os.path.join(ROOT, "Resources", "package.xml")
+PACKAGE_XML = os.path.join(ROOT, "package.xml")
 NS = {"p": "https://wiki.freecad.org/Package_Metadata"}
 
 

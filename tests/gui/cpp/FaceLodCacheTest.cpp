@@ -1,0 +1,202 @@
+// The per-face LOD caches behind SoNurbsLODShape, without Coin or a GL context.
+
+#include <gtest/gtest.h>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "FaceLod.hpp"
+#include "FaceLodCache.hpp"
+#include "occ/ModelImporter.hpp"
+
+namespace nurbslod::gui {
+namespace {
+
+std::shared_ptr<const Model> sphereModel() {
+    return std::make_shared<const Model>(occ::importModel(BRepPrimAPI_MakeSphere(10.0).Shape()));
+}
+
+std::shared_ptr<const Model> boxModel() {
+    return std::make_shared<const Model>(
+        occ::importModel(BRepPrimAPI_MakeBox(10.0, 20.0, 30.0).Shape()));
+}
+
+// Asks for a level and waits (at most a minute) until a worker made it.
+const FaceLod* makeLevel(FaceLodCache& cache, int face, int level) {
+    cache.request(face, level);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!cache.hasLevel(face, level) && std::chrono::steady_clock::now() < end) {
+        cache.waitForFinished(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
+        cache.collectFinished();
+        if (cache.pendingJobs() == 0 && !cache.hasLevel(face, level)) break;
+    }
+    int shown = -1;
+    const FaceLod* lod = cache.bestCached(face, level, &shown);
+    return shown == level ? lod : nullptr;
+}
+
+TEST(FaceLodCache, LevelTolerancesHalve) {
+    FaceLodCache cache(sphereModel());
+    const double diagonal = cache.model().boundingBoxDiagonal;
+    EXPECT_DOUBLE_EQ(cache.levelTolerance(0), FaceLodCache::coarsestRelativeTolerance * diagonal);
+    for (int level = 0; level < cache.finestLevel(); ++level)
+        EXPECT_DOUBLE_EQ(cache.levelTolerance(level + 1), 0.5 * cache.levelTolerance(level));
+    // the coarsest level within the tolerance asked for
+    EXPECT_EQ(cache.levelFor(cache.levelTolerance(3)), 3);
+    EXPECT_EQ(cache.levelFor(1.01 * cache.levelTolerance(3)), 3);
+    EXPECT_EQ(cache.levelFor(0.99 * cache.levelTolerance(3)), 4);
+    EXPECT_EQ(cache.levelFor(1e9), 0);
+    EXPECT_EQ(cache.levelFor(0.0), cache.finestLevel());
+    EXPECT_EQ(cache.levelFor(std::numeric_limits<double>::quiet_NaN()), cache.finestLevel());
+    EXPECT_LE(cache.levelTolerance(cache.finestLevel()),
+              FaceLodCache::finestRelativeTolerance * diagonal);
+}
+
+TEST(FaceLodCache, EveryFaceStartsWithTheCoarsestLevelAndRefinesInWorkers) {
+    FaceLodCache cache(sphereModel());
+    ASSERT_GT(cache.faceCount(), 0);
+    EXPECT_TRUE(cache.failures().empty());
+    int level = -1;
+    const FaceLod* coarse = cache.bestCached(0, 5, &level);
+    ASSERT_NE(coarse, nullptr);
+    EXPECT_EQ(level, 0);  // nothing finer yet: the finest there is
+    EXPECT_EQ(coarse->positions.size(), coarse->normals.size());
+    EXPECT_EQ(coarse->indices.size() % 3, 0u);
+    const FaceLod* fine = makeLevel(cache, 0, 4);
+    ASSERT_NE(fine, nullptr);
+    EXPECT_DOUBLE_EQ(fine->tolerance, cache.levelTolerance(4));
+    EXPECT_GT(fine->triangleCount(), 4 * coarse->triangleCount());
+    // the exact normals of a sphere point away from its centre; the vertices lie within the
+    // level's tolerance of it (edge vertices are shared between faces, not on either exactly)
+    for (std::size_t v = 0; v < fine->vertexCount(); ++v) {
+        const Eigen::Vector3d p(fine->positions[3 * v], fine->positions[3 * v + 1],
+                                fine->positions[3 * v + 2]);
+        const Eigen::Vector3d n(fine->normals[3 * v], fine->normals[3 * v + 1],
+                                fine->normals[3 * v + 2]);
+        ASSERT_NEAR(p.norm(), 10.0, fine->tolerance);
+        ASSERT_NEAR(n.norm(), 1.0, 1e-6);
+        ASSERT_GT(n.dot(p.normalized()), 1.0 - 1e-5);
+    }
+    // the coarsest level within a wanted one is preferred to a finer one
+    EXPECT_EQ(cache.bestCached(0, 0, &level), coarse);
+    EXPECT_EQ(cache.bestCached(0, 2, &level), fine);
+    EXPECT_EQ(level, 4);
+}
+
+TEST(FaceLodCache, ASingleFaceKeepsOnlyItsEdgesAndVertices) {
+    const auto model = boxModel();
+    const Model single = singleFaceModel(*model, 0);
+    ASSERT_EQ(single.faces.size(), 1u);
+    EXPECT_EQ(single.edges.size(), 4u);
+    EXPECT_EQ(single.vertices.size(), 4u);
+    for (const TrimLoop& loop : single.faces[0].loops)
+        for (const TrimCurve& curve : loop.curves) {
+            EXPECT_GE(curve.edge, 0);
+            EXPECT_LT(curve.edge, 4);
+        }
+}
+
+TEST(FaceLodCache, BordersOfAPlaneFaceAreItsFourSides) {
+    FaceLodCache cache(boxModel());
+    const FaceLod* lod = cache.bestCached(0, 0, nullptr);
+    ASSERT_NE(lod, nullptr);
+    ASSERT_FALSE(lod->borderLines.empty());
+    ASSERT_EQ(lod->borderLines.size() % 2, 0u);
+    // every border point lies on the face's rectangle border: at a corner coordinate
+    for (std::uint32_t index : lod->borderLines) {
+        int onBorder = 0;
+        for (int k = 0; k < 3; ++k) {
+            const float p = lod->positions[3 * std::size_t{index} + k];
+            onBorder += p == lod->boxMin[k] || p == lod->boxMax[k];
+        }
+        EXPECT_GE(onBorder, 2);  // flat in one direction, on a side in another
+    }
+}
+
+TEST(FaceLodCache, AFaceThatCannotBeImportedIsListedNotDrawn) {
+    auto model = std::make_shared<Model>(*boxModel());
+    model->faces[2].error = "test: cannot convert";
+    FaceLodCache cache(model);
+    ASSERT_EQ(cache.failures().size(), 1u);
+    EXPECT_EQ(cache.failures()[0].face, 3);
+    EXPECT_EQ(cache.failures()[0].reason, "test: cannot convert");
+    EXPECT_EQ(cache.bestCached(2, 0, nullptr), nullptr);
+    cache.request(2, 3);  // asked for anyway: nothing happens
+    EXPECT_EQ(cache.pendingJobs(), 0);
+}
+
+TEST(FaceLodCache, AModelWithoutExtentIsRefused) {
+    auto model = std::make_shared<Model>(*boxModel());
+    model->boundingBoxDiagonal = 0;
+    EXPECT_THROW(FaceLodCache cache(model), std::invalid_argument);
+    model->boundingBoxDiagonal = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(FaceLodCache cache(model), std::invalid_argument);
+}
+
+TEST(FaceLodCache, MovingAPoleRetessellatesOnlyThatFace) {
+    FaceLodCache cache(boxModel());
+    const FaceLod* other = cache.bestCached(1, 0, nullptr);
+    const FaceLod* before = cache.bestCached(0, 0, nullptr);
+    const float maxBefore[3] = {before->boxMax[0], before->boxMax[1], before->boxMax[2]};
+    const BSplineSurface& surface = cache.model().faces[0].surface;
+    ASSERT_GE(surface.countU(), 2);
+    // lift one corner pole 5 units along the face's normal direction (the flat axis)
+    int flat = 0;
+    for (int k = 0; k < 3; ++k)
+        if (before->boxMin[k] == before->boxMax[k]) flat = k;
+    Point3 corner = projectHomogeneous(surface.pole(0, 0));
+    corner[flat] += 5.0;
+    const double ms = cache.movePole(0, 0, 0, corner, 0);
+    EXPECT_GE(ms, 0.0);
+    const FaceLod* after = cache.bestCached(0, 0, nullptr);
+    ASSERT_NE(after, nullptr);
+    EXPECT_NE(after, before);
+    EXPECT_GT(after->boxMax[flat], maxBefore[flat] + 1.0);
+    EXPECT_EQ(cache.bestCached(1, 0, nullptr), other);  // the neighbour is untouched
+    EXPECT_DOUBLE_EQ(projectHomogeneous(cache.model().faces[0].surface.pole(0, 0))[flat],
+                     corner[flat]);
+}
+
+TEST(FaceLodCache, BadEditsAreRefusedAndChangeNothing) {
+    FaceLodCache cache(boxModel());
+    const FaceLod* before = cache.bestCached(0, 0, nullptr);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(cache.movePole(0, 0, 0, Point3(nan, 0, 0), 0), std::invalid_argument);
+    EXPECT_THROW(cache.movePole(0, -1, 0, Point3(0, 0, 0), 0), std::out_of_range);
+    EXPECT_THROW(cache.movePole(0, 0, 99, Point3(0, 0, 0), 0), std::out_of_range);
+    EXPECT_THROW(cache.movePole(99, 0, 0, Point3(0, 0, 0), 0), std::out_of_range);
+    EXPECT_THROW(cache.replaceFace(0, Model{}, 0), std::invalid_argument);
+    EXPECT_EQ(cache.bestCached(0, 0, nullptr), before);
+}
+
+TEST(FaceLodCache, ALevelMadeForTheOldSurfaceIsDroppedAfterAnEdit) {
+    FaceLodCache cache(boxModel());
+    cache.request(0, 6);
+    const Point3 corner = projectHomogeneous(cache.model().faces[0].surface.pole(0, 0));
+    cache.movePole(0, 0, 0, corner + Point3(0.5, 0.5, 0.5), 0);
+    // wait for the old job, then collect: level 6 of the old surface must not appear
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (cache.pendingJobs() > 0 && std::chrono::steady_clock::now() < end)
+        cache.waitForFinished(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
+    cache.collectFinished();
+    EXPECT_FALSE(cache.hasLevel(0, 6));
+    EXPECT_TRUE(cache.hasLevel(0, 0));
+}
+
+TEST(FaceLod, TessellationFailuresComeBackAsReasons) {
+    auto model = std::make_shared<Model>(*boxModel());
+    const FaceLodResult bad = tessellateFaceLod(*model, 0, -1.0);
+    EXPECT_EQ(bad.lod, nullptr);
+    EXPECT_FALSE(bad.failure.empty());
+    model->faces[0].surface.pole(0, 0).w() = -1.0;  // a weight <= 0
+    const FaceLodResult badWeight = tessellateFaceLod(*model, 0, 0.1);
+    EXPECT_EQ(badWeight.lod, nullptr);
+    EXPECT_NE(badWeight.failure.find("weight"), std::string::npos) << badWeight.failure;
+}
+
+}  // namespace
+}  // namespace nurbslod::gui
