@@ -28,7 +28,9 @@ struct AnalysisMesh {
 };
 
 // Splits the tessellator's mesh of the model into per-face vertices and evaluates the
-// curvature of each vertex's face at its (u, v) (geometry/SurfaceCurvature). The mesh must
+// curvature of each vertex's face at its (u, v) (geometry/SurfaceCurvature). A vertex on a
+// knot line where its surface is less than C2 is split once more, by side, and each copy is
+// evaluated as the one-sided limit, so a curvature jump at a G1 joint stays sharp. The mesh must
 // come from tessellateModel(model, ...), whose normals carry their (u, v) in parameters.
 // Throws std::invalid_argument when the mesh does not fit the model.
 AnalysisMesh analysisMesh(const Model& model, const Mesh& mesh);
