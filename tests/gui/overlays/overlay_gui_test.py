@@ -1,0 +1,266 @@
+"""The analysis overlays in the real FreeCAD GUI (run by tests/gui/run_overlay_tests.sh under
+Xvfb): zebra, isophotes and the curvature map on two-patch surfaces that meet G1-not-G2 and
+G2, with screenshots, and assertions measured on the screenshots.
+
+FreeCAD runs this file as a macro (no __file__): NURBSLOD_GUI_TEST_DIR names this folder,
+NURBSLOD_SCREENSHOT_DIR where the screenshots go, NURBSLOD_TEST_RESULTS where the counts
+"passed failed skipped" go. The work runs from a QTimer once the main window is up, and the
+script ends FreeCAD with os._exit (the exit code says whether every check passed).
+"""
+
+import os
+import sys
+import time
+import traceback
+
+from PySide import QtCore
+
+HERE = os.environ.get("NURBSLOD_GUI_TEST_DIR", "")
+SHOTS = os.environ.get("NURBSLOD_SCREENSHOT_DIR", "")
+RESULTS = os.environ.get("NURBSLOD_TEST_RESULTS", "")
+WIDTH, HEIGHT = 960, 600
+
+# Limits of the kink measure (degrees), from the geometry: at the G1 joint the reflection
+# lines turn by tens of degrees (60 measured), at the G2 joint they run on (a few degrees
+# of fitting error remain; 0.2 for isophotes).
+G1_KINK_AT_LEAST = 25.0
+G2_KINK_AT_MOST = 10.0
+
+
+class Context:
+    def __init__(self):
+        import FreeCAD
+        import FreeCADGui
+
+        import surfaces
+
+        self.doc = FreeCAD.newDocument("OverlayTest")
+        self.objects = {}
+        for continuity in ("G1", "G2"):
+            obj = self.doc.addObject("Part::Feature", "Surface" + continuity)
+            obj.Shape = surfaces.two_patch_face(continuity)
+            self.objects[continuity] = obj
+        self.doc.recompute()
+        self.view = FreeCADGui.ActiveDocument.ActiveView
+        self.view.setCameraType("Orthographic")
+        self.plain = {}
+        self.boxes = {}
+
+    def show_only(self, continuity):
+        for name, obj in self.objects.items():
+            obj.ViewObject.Visibility = name == continuity
+        self.view.viewTop()
+        self.view.fitAll()
+
+    def shot(self, name):
+        path = os.path.join(SHOTS, name + ".png")
+        self.view.saveImage(path, WIDTH, HEIGHT, "Current")
+        return path
+
+
+def measure_box(ctx, continuity):
+    import image_measures
+
+    if continuity not in ctx.boxes:
+        ctx.show_only(continuity)
+        path = ctx.shot("plain_" + continuity)
+        ctx.plain[continuity] = path
+        top, bottom, left, right = image_measures.object_box(image_measures.read_rgb(path))
+        # the face's border edge and the rows right next to it are not stripes
+        ctx.boxes[continuity] = ((top + 8, bottom - 8, left, right), (left + right) // 2)
+    return ctx.boxes[continuity]
+
+
+def kink_of(ctx, continuity, kind, **options):
+    import image_measures
+    import NurbsLODOverlays
+
+    box, joint = measure_box(ctx, continuity)
+    ctx.show_only(continuity)
+    start = time.perf_counter()
+    result = NurbsLODOverlays.set_overlay(ctx.objects[continuity], kind, **options)
+    seconds = time.perf_counter() - start
+    path = ctx.shot("{}_{}".format(kind, continuity))
+    NurbsLODOverlays.set_overlay(ctx.objects[continuity], None)
+    kink, left, right = image_measures.joint_kink(image_measures.read_rgb(path), box, joint)
+    print(
+        "  {} on {}: kink {:.1f} deg (edge direction {:.1f} left, {:.1f} right of the joint); "
+        "{} triangles, overlay built in {:.2f} s".format(
+            kind, continuity, kink, left, right, result["triangles"], seconds
+        )
+    )
+    return kink
+
+
+def test_zebra_kinks_at_g1_joint_and_not_at_g2_joint(ctx):
+    options = dict(count=36, width_ratio=0.5, direction=(1, -1, 0), lock="camera")
+    g1 = kink_of(ctx, "G1", "zebra", **options)
+    g2 = kink_of(ctx, "G2", "zebra", **options)
+    assert g1 >= G1_KINK_AT_LEAST, "no stripe kink at the G1 joint: {:.1f} deg".format(g1)
+    assert g2 <= G2_KINK_AT_MOST, "a stripe kink at the G2 joint: {:.1f} deg".format(g2)
+
+
+def test_isophotes_kink_at_g1_joint_and_not_at_g2_joint(ctx):
+    options = dict(count=24, line_width=2.0, direction=(0.3, 0.5, 1.0), lock="camera")
+    g1 = kink_of(ctx, "G1", "isophotes", **options)
+    g2 = kink_of(ctx, "G2", "isophotes", **options)
+    assert g1 >= G1_KINK_AT_LEAST, "no isophote kink at the G1 joint: {:.1f} deg".format(g1)
+    assert g2 <= G2_KINK_AT_MOST, "an isophote kink at the G2 joint: {:.1f} deg".format(g2)
+
+
+def test_curvature_map_jumps_at_g1_joint_only_and_draws_its_legend(ctx):
+    import image_measures
+    import NurbsLODOverlays
+
+    jumps = {}
+    for continuity in ("G1", "G2"):
+        box, joint = measure_box(ctx, continuity)
+        ctx.show_only(continuity)
+        obj = ctx.objects[continuity]
+        # contour lines would count as colour changes: measure on the map without them
+        result = NurbsLODOverlays.set_overlay(obj, "curvature", curvature="mean", levels=0)
+        path = ctx.shot("curvature_mean_" + continuity)
+        NurbsLODOverlays.set_overlay(obj, "curvature", curvature="mean")
+        ctx.shot("curvature_mean_levels_" + continuity)
+        NurbsLODOverlays.set_overlay(obj, None)
+        rgb = image_measures.read_rgb(path)
+        jumps[continuity] = image_measures.color_jump(rgb, box, joint)
+        low, high = result["range"]
+        print(
+            "  curvature (mean) on {}: range {:.4g} .. {:.4g} 1/mm, colour change across the "
+            "joint {:.3f}, {:.1f} times the change beside it".format(
+                continuity, low, high, *jumps[continuity]
+            )
+        )
+        # the legend: a colour bar at the left, red at its top, blue at its bottom
+        column = int(0.04 * WIDTH)  # x = -0.92 in the legend's [-1, 1] frame
+        top_row, bottom_row = int(0.5 * (1 - 0.66) * HEIGHT), int(0.5 * (1 + 0.66) * HEIGHT)
+        top, bottom = rgb[top_row, column], rgb[bottom_row, column]
+        assert top[0] > 0.8 and top[2] < 0.3, "legend top is not red: {}".format(top)
+        assert bottom[2] > 0.8 and bottom[0] < 0.3, "legend bottom is not blue: {}".format(bottom)
+    # the mean curvature jumps by c/400 at the G1 joint; at the G2 joint it is continuous
+    across, ratio = jumps["G1"]
+    assert across > 0.5 and ratio > 3, "no colour jump at the G1 joint: {}".format(jumps["G1"])
+    across, ratio = jumps["G2"]
+    assert ratio < 1.5, "a colour jump at the G2 joint: {}".format(jumps["G2"])
+
+
+def test_removing_the_overlay_restores_freecads_display_exactly(ctx):
+    import numpy as np
+
+    import image_measures
+    import NurbsLODOverlays
+
+    measure_box(ctx, "G1")
+    ctx.show_only("G1")
+    obj = ctx.objects["G1"]
+    switch_before = NurbsLODOverlays._view_provider_switch(obj)[1]
+    children_before = switch_before.getNumChildren()
+    which_before = switch_before.whichChild.getValue()
+    for kind in ("zebra", "isophotes", "curvature"):
+        NurbsLODOverlays.set_overlay(obj, kind)
+        assert NurbsLODOverlays.overlay_of(obj) == kind
+    NurbsLODOverlays.set_overlay(obj, None)
+    assert NurbsLODOverlays.overlay_of(obj) is None
+    assert switch_before.getNumChildren() == children_before, "an overlay node was left behind"
+    assert switch_before.whichChild.getValue() == which_before, "the display mode changed"
+    after = image_measures.read_rgb(ctx.shot("restored_G1"))
+    before = image_measures.read_rgb(ctx.plain["G1"])
+    difference = float(np.abs(after - before).max())
+    assert difference == 0.0, "the display differs after the overlay: {}".format(difference)
+
+
+def test_bad_input_is_refused_with_a_message(ctx):
+    import NurbsLODOverlays
+
+    obj = ctx.objects["G1"]
+    cases = [
+        (("rainbow",), {}),
+        (("zebra",), {"count": 0}),
+        (("zebra",), {"width_ratio": 1.5}),
+        (("zebra",), {"direction": (0, 0, 0)}),
+        (("zebra",), {"lock": "world"}),
+        (("isophotes",), {"line_width": float("nan")}),
+        (("curvature",), {"curvature": "torsion"}),
+        (("curvature",), {"range": (1.0, -1.0)}),
+        (("curvature",), {"relative": -1}),
+        (("zebra",), {"stripes": 3}),
+    ]
+    for args, options in cases:
+        try:
+            NurbsLODOverlays.set_overlay(obj, *args, **options)
+        except ValueError as error:
+            assert "NurbsLOD" in str(error), str(error)
+        else:
+            raise AssertionError("accepted {} {}".format(args, options))
+    assert NurbsLODOverlays.overlay_of(obj) is None, "a refused call left an overlay"
+    empty = ctx.doc.addObject("Part::Feature", "Empty")
+    try:
+        NurbsLODOverlays.set_overlay(empty, "zebra")
+    except ValueError as error:
+        assert "no shape" in str(error) or "no faces" in str(error), str(error)
+    else:
+        raise AssertionError("an object without a shape got an overlay")
+    ctx.doc.removeObject(empty.Name)
+
+
+def test_preferences_give_the_defaults(ctx):
+    import FreeCAD
+
+    import NurbsLODOverlays
+
+    group = FreeCAD.ParamGet(NurbsLODOverlays.PARAMETER_GROUP)
+    group.SetInt("OverlayZebraStripeCount", 7)
+    group.SetString("OverlayCurvatureKind", "gaussian")
+    try:
+        assert NurbsLODOverlays.options_for("zebra", {})["count"] == 7
+        assert NurbsLODOverlays.options_for("zebra", {"count": 9})["count"] == 9
+        assert NurbsLODOverlays.options_for("curvature", {})["curvature"] == "gaussian"
+    finally:
+        group.RemInt("OverlayZebraStripeCount")
+        group.RemString("OverlayCurvatureKind")
+    assert NurbsLODOverlays.options_for("zebra", {})["count"] == 16
+
+
+TESTS = [
+    test_zebra_kinks_at_g1_joint_and_not_at_g2_joint,
+    test_isophotes_kink_at_g1_joint_and_not_at_g2_joint,
+    test_curvature_map_jumps_at_g1_joint_only_and_draws_its_legend,
+    test_removing_the_overlay_restores_freecads_display_exactly,
+    test_bad_input_is_refused_with_a_message,
+    test_preferences_give_the_defaults,
+]
+
+
+def run():
+    passed = failed = 0
+    try:
+        sys.path.insert(0, HERE)
+        os.makedirs(SHOTS, exist_ok=True)
+        ctx = Context()
+    except Exception:
+        traceback.print_exc()
+        ctx = None
+    for test in TESTS:
+        if ctx is None:
+            failed += 1
+            continue
+        print("overlay GUI test: " + test.__name__)
+        try:
+            test(ctx)
+        except Exception:
+            traceback.print_exc()
+            print("FAIL: " + test.__name__)
+            failed += 1
+        else:
+            print("ok: " + test.__name__)
+            passed += 1
+    print("{} passed, {} failed, 0 skipped".format(passed, failed))
+    sys.stdout.flush()
+    if RESULTS:
+        with open(RESULTS, "w") as results:
+            results.write("{} {} 0\n".format(passed, failed))
+    os._exit(1 if failed else 0)
+
+
+QtCore.QTimer.singleShot(500, run)
