@@ -12,7 +12,7 @@ set -uo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 BUILD_DIR="${NURBSLOD_BUILD_DIR:-$ROOT/build}"
-TEST_COUNT=6  # the tests in overlays/overlay_gui_test.py, for the skip count
+TEST_COUNT=8  # the tests in overlays/overlay_gui_test.py, for the skip count
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 SHOTS="${1:-$WORK/screenshots}"
@@ -44,10 +44,11 @@ ln -s "$ROOT" "$home/.local/share/FreeCAD/Mod/NurbsLOD"
         env -u XDG_DATA_HOME -u XDG_CONFIG_HOME -u XDG_CACHE_HOME HOME="$home" \
             NURBSLOD_BUILD_DIR="$BUILD_DIR" NURBSLOD_GUI_TEST_DIR="$ROOT/tests/gui/overlays" \
             NURBSLOD_SCREENSHOT_DIR="$SHOTS" NURBSLOD_TEST_RESULTS="$WORK/counts" \
+            NURBSLOD_CORPUS_DIR="${NURBSLOD_CORPUS_DIR:-$ROOT/../shared/corpus}" \
             QTWEBENGINE_CHROMIUM_FLAGS="--no-sandbox --disable-gpu" \
             timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" \
             freecad "$ROOT/tests/gui/overlays/overlay_gui_test.py" </dev/null 2>&1 |
-        grep -v -e '^$' -e 'Addon Manager' -e '^ *#'
+        grep -v -e '^$' -e 'Addon Manager' -e '^ *#' -e ' passed, .* failed, .* skipped$'
 )
 if read -r passed failed skipped <"$WORK/counts" 2>/dev/null; then
     report "$passed" "$failed" "$skipped"
