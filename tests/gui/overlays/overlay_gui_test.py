@@ -277,6 +277,38 @@ def test_stripes_come_from_exact_normals_not_facets(ctx):
     assert differing(facets) > 0.1, "the measure cannot tell facet normals from exact ones"
 
 
+def test_light_locked_to_object_turns_with_it_and_to_camera_does_not(ctx):
+    """Isophotes with the light along +z, once fixed to the object and once to the camera:
+    from the top the two frames agree and so must the pictures; from the front the object's
+    z is the camera's y, so the pictures must differ."""
+    import numpy as np
+
+    import image_measures
+    import NurbsLODOverlays
+
+    obj = ctx.objects["G1"]
+    pictures = {}
+    for view in ("top", "front"):
+        ctx.show_only("G1")
+        (ctx.view.viewTop if view == "top" else ctx.view.viewFront)()
+        ctx.view.fitAll()
+        for lock in ("object", "camera"):
+            NurbsLODOverlays.set_overlay(obj, "isophotes", direction=(0, 0, 1), lock=lock)
+            pictures[view, lock] = image_measures.read_rgb(
+                ctx.shot("isophotes_G1_{}_light_{}".format(view, lock))
+            )
+    NurbsLODOverlays.set_overlay(obj, None)
+
+    def differing(view):
+        a, b = pictures[view, "object"], pictures[view, "camera"]
+        return float((np.abs(a - b).max(axis=2) > 0.1).mean())
+
+    print("  pixels that differ between object and camera light: {:.2%} from the top, {:.2%} "
+          "from the front".format(differing("top"), differing("front")))
+    assert differing("top") < 0.001, "the frames agree from the top, the pictures do not"
+    assert differing("front") > 0.01, "turning the view did not move the camera's light"
+
+
 class Skip(Exception):
     """The test cannot run here (its input is missing); counted as skipped."""
 
@@ -329,6 +361,7 @@ TESTS = [
     test_isophotes_kink_at_g1_joint_and_not_at_g2_joint,
     test_curvature_map_jumps_at_g1_joint_only_and_draws_its_legend,
     test_stripes_come_from_exact_normals_not_facets,
+    test_light_locked_to_object_turns_with_it_and_to_camera_does_not,
     test_removing_the_overlay_restores_freecads_display_exactly,
     test_bad_input_is_refused_with_a_message,
     test_preferences_give_the_defaults,
