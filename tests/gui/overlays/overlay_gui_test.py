@@ -309,6 +309,27 @@ def test_light_locked_to_object_turns_with_it_and_to_camera_does_not(ctx):
     assert differing("front") > 0.01, "turning the view did not move the camera's light"
 
 
+def test_faces_stay_pickable_under_the_overlay(ctx):
+    """The overlay itself is not pickable; FreeCAD's faces, drawn invisible, still are: a
+    click in the middle of the view finds Face1 of the object, as without the overlay."""
+    import NurbsLODOverlays
+
+    ctx.show_only("G1")
+    obj = ctx.objects["G1"]
+    width, height = ctx.view.getSize()
+    middle = (width // 2, height // 2)
+    before = ctx.view.getObjectInfo(middle)
+    NurbsLODOverlays.set_overlay(obj, "zebra")
+    try:
+        during = ctx.view.getObjectInfo(middle)
+    finally:
+        NurbsLODOverlays.set_overlay(obj, None)
+    print("  picked without the overlay: {}; with it: {}".format(before, during))
+    assert before and before.get("Object") == obj.Name, before
+    assert during and during.get("Object") == obj.Name, during
+    assert during.get("Component") == before.get("Component") == "Face1", during
+
+
 class Skip(Exception):
     """The test cannot run here (its input is missing); counted as skipped."""
 
@@ -363,6 +384,7 @@ TESTS = [
     test_stripes_come_from_exact_normals_not_facets,
     test_light_locked_to_object_turns_with_it_and_to_camera_does_not,
     test_removing_the_overlay_restores_freecads_display_exactly,
+    test_faces_stay_pickable_under_the_overlay,
     test_bad_input_is_refused_with_a_message,
     test_preferences_give_the_defaults,
     test_every_overlay_on_a_corpus_model,
