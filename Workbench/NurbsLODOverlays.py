@@ -673,3 +673,71 @@ def refresh_overlay(obj):
         return None
     options = {k: v for k, v in overlay.options.items() if k != "shown_range"}
     return set_overlay(obj, overlay.kind, **options)
+
+
+# Commands, for the workbench's menu and toolbar: each shows its overlay (with the defaults
+# and preferences) on the selected Part objects; the last one removes any overlay.
+COMMANDS = {
+    "NurbsLOD_Isophotes": ("isophotes", "Isophotes", "Show isophotes of the exact surface"),
+    "NurbsLOD_Zebra": ("zebra", "Reflection lines (zebra)", "Show reflection lines (zebra "
+                       "stripes) of the exact surface: a kink where faces meet G1, not G2"),
+    "NurbsLOD_CurvatureMap": ("curvature", "Curvature map", "Colour the surface by its "
+                              "curvature (kind and range from the preferences), with a legend"),
+    "NurbsLOD_OverlayOff": (None, "Remove overlay", "Show FreeCAD's own display again"),
+}
+
+
+def _selected_objects():
+    import FreeCADGui
+
+    return [
+        obj
+        for obj in FreeCADGui.Selection.getSelection()
+        if hasattr(obj, "Shape") and getattr(obj, "ViewObject", None) is not None
+    ]
+
+
+class OverlayCommand:
+    def __init__(self, kind, menu_text, tool_tip):
+        self.kind, self.menu_text, self.tool_tip = kind, menu_text, tool_tip
+
+    def GetResources(self):
+        import NurbsLODPaths
+
+        return {
+            "Pixmap": NurbsLODPaths.icon("NurbsLOD.svg"),
+            "MenuText": self.menu_text,
+            "ToolTip": self.tool_tip,
+        }
+
+    def IsActive(self):
+        objects = _selected_objects()
+        if self.kind is None:
+            return any(overlay_of(obj) is not None for obj in objects)
+        return bool(objects)
+
+    def Activated(self):
+        from PySide import QtCore, QtGui
+
+        QtGui.QApplication.setOverrideCursor(QtGui.QCursor(QtCore.Qt.WaitCursor))
+        try:
+            for obj in _selected_objects():
+                try:  # a command must not raise: tell the user instead
+                    set_overlay(obj, self.kind)
+                except Exception as error:
+                    FreeCAD.Console.PrintError(
+                        "NurbsLOD: no overlay on {}: {}\n".format(obj.Label, error)
+                    )
+        finally:
+            QtGui.QApplication.restoreOverrideCursor()
+
+
+def register_commands():
+    """Adds the overlay commands to FreeCAD (once); returns their names in menu order."""
+    import FreeCADGui
+
+    known = set(FreeCADGui.listCommands())
+    for name, (kind, menu_text, tool_tip) in COMMANDS.items():
+        if name not in known:
+            FreeCADGui.addCommand(name, OverlayCommand(kind, menu_text, tool_tip))
+    return list(COMMANDS)

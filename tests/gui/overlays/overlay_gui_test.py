@@ -330,6 +330,31 @@ def test_faces_stay_pickable_under_the_overlay(ctx):
     assert during.get("Component") == before.get("Component") == "Face1", during
 
 
+def test_commands_show_and_remove_overlays_on_the_selection(ctx):
+    import FreeCADGui
+
+    import NurbsLODOverlays
+
+    names = NurbsLODOverlays.register_commands()
+    assert NurbsLODOverlays.register_commands() == names  # a second call adds nothing
+    obj = ctx.objects["G2"]
+    empty = ctx.doc.addObject("Part::Feature", "EmptyForCommand")
+    ctx.show_only("G2")
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(obj)
+    FreeCADGui.Selection.addSelection(empty)  # refused with a message, the other still done
+    try:
+        for name, kind in (("NurbsLOD_Zebra", "zebra"), ("NurbsLOD_CurvatureMap", "curvature"),
+                           ("NurbsLOD_Isophotes", "isophotes"), ("NurbsLOD_OverlayOff", None)):
+            FreeCADGui.runCommand(name)
+            assert NurbsLODOverlays.overlay_of(obj) == kind, (name, NurbsLODOverlays.overlay_of(obj))
+            assert NurbsLODOverlays.overlay_of(empty) is None
+    finally:
+        FreeCADGui.Selection.clearSelection()
+        NurbsLODOverlays.set_overlay(obj, None)
+        ctx.doc.removeObject(empty.Name)
+
+
 class Skip(Exception):
     """The test cannot run here (its input is missing); counted as skipped."""
 
@@ -385,6 +410,7 @@ TESTS = [
     test_light_locked_to_object_turns_with_it_and_to_camera_does_not,
     test_removing_the_overlay_restores_freecads_display_exactly,
     test_faces_stay_pickable_under_the_overlay,
+    test_commands_show_and_remove_overlays_on_the_selection,
     test_bad_input_is_refused_with_a_message,
     test_preferences_give_the_defaults,
     test_every_overlay_on_a_corpus_model,
