@@ -355,6 +355,46 @@ def test_commands_show_and_remove_overlays_on_the_selection(ctx):
         ctx.doc.removeObject(empty.Name)
 
 
+def test_overlay_follows_the_placement_and_object_locked_tubes_turn_with_it(ctx):
+    """The object moved and turned 90 degrees about z, tubes fixed to the object: from the
+    top the zebra is the unmoved one turned by 90 degrees, pixel for pixel."""
+    import FreeCAD
+    import numpy as np
+
+    import image_measures
+    import NurbsLODOverlays
+
+    box, _ = measure_box(ctx, "G1")
+    top, bottom, left, right = box
+    obj = ctx.objects["G1"]
+    options = dict(count=36, direction=(1, -1, 0), lock="object")
+    ctx.show_only("G1")
+    NurbsLODOverlays.set_overlay(obj, "zebra", **options)
+    unmoved = image_measures.read_rgb(ctx.shot("zebra_G1_object_tubes"))
+    NurbsLODOverlays.set_overlay(obj, None)
+    obj.Placement = FreeCAD.Placement(
+        FreeCAD.Vector(100, 50, 7), FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 90)
+    )
+    ctx.doc.recompute()
+    try:
+        ctx.show_only("G1")
+        NurbsLODOverlays.set_overlay(obj, "zebra", **options)
+        moved = image_measures.read_rgb(ctx.shot("zebra_G1_object_tubes_turned"))
+    finally:
+        NurbsLODOverlays.set_overlay(obj, None)
+        obj.Placement = FreeCAD.Placement()
+        ctx.doc.recompute()
+    # inside the face's border; the square face turns onto itself
+    window = (slice(top - 5, bottom + 6), slice(left + 3, right - 2))
+    expected = np.rot90(unmoved[window], 1)
+    shown = moved[window]
+    assert expected.shape == shown.shape, (expected.shape, shown.shape)
+    differing = float((np.abs(expected - shown).max(axis=2) > 0.5).mean())
+    print("  turned object: {:.3%} of the pixels differ from the turned picture".format(
+        differing))
+    assert differing < 0.005, "the overlay does not follow the placement"
+
+
 class Skip(Exception):
     """The test cannot run here (its input is missing); counted as skipped."""
 
@@ -410,6 +450,7 @@ TESTS = [
     test_light_locked_to_object_turns_with_it_and_to_camera_does_not,
     test_removing_the_overlay_restores_freecads_display_exactly,
     test_faces_stay_pickable_under_the_overlay,
+    test_overlay_follows_the_placement_and_object_locked_tubes_turn_with_it,
     test_commands_show_and_remove_overlays_on_the_selection,
     test_bad_input_is_refused_with_a_message,
     test_preferences_give_the_defaults,
