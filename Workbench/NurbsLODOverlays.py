@@ -464,14 +464,16 @@ class _Overlay:
             fragment.parameter.set1Value(fragment.parameter.getNum(), node)
 
         if kind == "isophotes":
-            parameter(coin.SoShaderParameter3f, "lightDirection", coin.SbVec3f(*options["direction"]))
+            direction = coin.SbVec3f(*options["direction"])
+            parameter(coin.SoShaderParameter3f, "lightDirection", direction)
             parameter(coin.SoShaderParameter1i, "lockToObject", int(options["lock"] == "object"))
             parameter(coin.SoShaderParameter1f, "lineCount", float(options["count"]))
             parameter(coin.SoShaderParameter1f, "lineWidth", float(options["line_width"]))
             parameter(coin.SoShaderParameter3f, "surfaceColor", coin.SbVec3f(0.85, 0.85, 0.88))
             parameter(coin.SoShaderParameter3f, "lineColor", coin.SbVec3f(0.05, 0.05, 0.1))
         elif kind == "zebra":
-            parameter(coin.SoShaderParameter3f, "tubeDirection", coin.SbVec3f(*options["direction"]))
+            direction = coin.SbVec3f(*options["direction"])
+            parameter(coin.SoShaderParameter3f, "tubeDirection", direction)
             parameter(coin.SoShaderParameter1i, "lockToObject", int(options["lock"] == "object"))
             parameter(coin.SoShaderParameter1f, "stripeCount", float(options["count"]))
             parameter(coin.SoShaderParameter1f, "widthRatio", float(options["width_ratio"]))

@@ -1,6 +1,5 @@
 """NurbsLOD.analysis_mesh: per-vertex exact normals and curvature for the analysis overlays."""
 
-import math
 import unittest
 
 import FreeCAD

@@ -347,7 +347,8 @@ def test_commands_show_and_remove_overlays_on_the_selection(ctx):
         for name, kind in (("NurbsLOD_Zebra", "zebra"), ("NurbsLOD_CurvatureMap", "curvature"),
                            ("NurbsLOD_Isophotes", "isophotes"), ("NurbsLOD_OverlayOff", None)):
             FreeCADGui.runCommand(name)
-            assert NurbsLODOverlays.overlay_of(obj) == kind, (name, NurbsLODOverlays.overlay_of(obj))
+            shown = NurbsLODOverlays.overlay_of(obj)
+            assert shown == kind, (name, shown)
             assert NurbsLODOverlays.overlay_of(empty) is None
     finally:
         FreeCADGui.Selection.clearSelection()
@@ -400,7 +401,6 @@ class Skip(Exception):
 
 
 def test_every_overlay_on_a_corpus_model(ctx):
-    import FreeCAD
     import numpy as np
     import Part
 
