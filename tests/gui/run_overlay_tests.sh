@@ -12,7 +12,7 @@ set -uo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 BUILD_DIR="${NURBSLOD_BUILD_DIR:-$ROOT/build}"
-TEST_COUNT=12  # the tests in overlays/overlay_gui_test.py, for the skip count
+TEST_COUNT=12  # len(TESTS) in overlays/overlay_cases.py, for the skip count
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 SHOTS="${1:-$WORK/screenshots}"
