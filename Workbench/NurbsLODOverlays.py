@@ -20,7 +20,7 @@ Options common to every kind:
                          with the object)
 Isophotes: count (lines over the intensity range), line_width (pixels), direction (towards
   the light).
-Zebra: count (black stripes around a full turn of the reflected direction), width_ratio
+Zebra: count or stripes (black stripes around a full turn of the reflected direction), width_ratio
   (black fraction of each period), direction (axis of the light tubes).
 Curvature: curvature ("gaussian", "mean", "minimum", "maximum"), range ((low, high) overrides
   the automatic range), percentiles (the automatic range: these percentiles of the vertex
@@ -66,25 +66,33 @@ DEFAULTS = {
     },
 }
 
+# The order of the curvature kinds in the preferences page's combo box, which stores the
+# index (Gui::PrefComboBox).
+CURVATURE_KIND_ORDER = ("gaussian", "mean", "minimum", "maximum")
+
 # option -> (parameter name, type) in PARAMETER_GROUP; a parameter that is set wins over
-# DEFAULTS, an option given to set_overlay wins over both.
+# DEFAULTS, an option given to set_overlay wins over both. The names of the preferences page
+# (Resources/ui/NurbsLODPreferences.ui) where it has the option.
 PREFERENCES = {
     "common": {"relative": ("OverlayRelativeTolerance", "Float")},
     "isophotes": {
-        "count": ("OverlayIsophoteCount", "Int"),
-        "line_width": ("OverlayIsophoteLineWidth", "Float"),
-        "lock": ("OverlayIsophoteLock", "String"),
+        "count": ("IsophoteCount", "Int"),
+        "line_width": ("IsophoteLineWidth", "Float"),
+        "lock": ("IsophoteLock", "String"),
     },
     "zebra": {
-        "count": ("OverlayZebraStripeCount", "Int"),
-        "width_ratio": ("OverlayZebraWidthRatio", "Float"),
-        "lock": ("OverlayZebraLock", "String"),
+        "count": ("ZebraStripeCount", "Int"),
+        "width_ratio": ("ZebraWidthRatio", "Float"),
+        "lock": ("ZebraLock", "String"),
     },
     "curvature": {
-        "curvature": ("OverlayCurvatureKind", "String"),
-        "levels": ("OverlayCurvatureLevels", "Int"),
+        "curvature": ("CurvatureKind", "Int"),  # index into CURVATURE_KIND_ORDER
+        "levels": ("CurvatureLevels", "Int"),
     },
 }
+
+# Other names an option answers to: zebra stripes=12 is count=12.
+ALIASES = {"zebra": {"stripes": "count"}, "isophotes": {"lines": "count"}}
 
 SHADER_DIR = os.path.join(
     os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "Resources", "shaders"
@@ -134,9 +142,14 @@ def options_for(kind, options):
         for section in ("common", kind):
             for option, (name, type_name) in PREFERENCES[section].items():
                 if name in set_names[type_name]:
-                    merged[option] = getattr(group, "Get" + type_name)(name)
+                    value = getattr(group, "Get" + type_name)(name)
+                    if option == "curvature":
+                        value = CURVATURE_KIND_ORDER[value % len(CURVATURE_KIND_ORDER)]
+                    merged[option] = value
     except Exception as error:  # preferences are a convenience: never fail for them
         FreeCAD.Console.PrintWarning("NurbsLOD: overlay preferences not read: {}\n".format(error))
+    aliases = ALIASES.get(kind, {})
+    options = {aliases.get(name, name): value for name, value in options.items()}
     unknown = set(options) - set(merged)
     if unknown:
         raise ValueError(

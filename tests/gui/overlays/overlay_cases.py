@@ -190,7 +190,7 @@ def test_bad_input_is_refused_with_a_message(ctx):
         (("curvature",), {"curvature": "torsion"}),
         (("curvature",), {"range": (1.0, -1.0)}),
         (("curvature",), {"relative": -1}),
-        (("zebra",), {"stripes": 3}),
+        (("zebra",), {"stripe_count": 3}),
     ]
     for args, options in cases:
         try:
@@ -216,15 +216,20 @@ def test_preferences_give_the_defaults(ctx):
     import NurbsLODOverlays
 
     group = FreeCAD.ParamGet(NurbsLODOverlays.PARAMETER_GROUP)
-    group.SetInt("OverlayZebraStripeCount", 7)
-    group.SetString("OverlayCurvatureKind", "gaussian")
+    # as the preferences page writes them: spin boxes, a double spin box, a combo box index
+    group.SetInt("ZebraStripeCount", 7)
+    group.SetFloat("ZebraWidthRatio", 0.3)
+    group.SetInt("CurvatureKind", 0)
     try:
-        assert NurbsLODOverlays.options_for("zebra", {})["count"] == 7
+        zebra = NurbsLODOverlays.options_for("zebra", {})
+        assert (zebra["count"], zebra["width_ratio"]) == (7, 0.3), zebra
         assert NurbsLODOverlays.options_for("zebra", {"count": 9})["count"] == 9
+        assert NurbsLODOverlays.options_for("zebra", {"stripes": 11})["count"] == 11
         assert NurbsLODOverlays.options_for("curvature", {})["curvature"] == "gaussian"
     finally:
-        group.RemInt("OverlayZebraStripeCount")
-        group.RemString("OverlayCurvatureKind")
+        group.RemInt("ZebraStripeCount")
+        group.RemFloat("ZebraWidthRatio")
+        group.RemInt("CurvatureKind")
     assert NurbsLODOverlays.options_for("zebra", {})["count"] == 16
 
 
