@@ -25,6 +25,7 @@
 #include "io/MeshWriter.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
+#include "tessellate/AnalysisMesh.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace py = pybind11;
@@ -116,25 +117,35 @@ int threadCount(int threads) {
     return threads;
 }
 
-// Runs without the GIL: reading, importing and tessellating are pure C++.
-TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
-                                    TessellationOptions options) {
+// Runs without the GIL: reading and importing are pure C++.
+Model importSource(const ShapeSource& source) {
     const TopoDS_Shape shape =
         source.isPath ? occ::readShape(source.text) : occ::shapeFromBrepString(source.text);
-    const Model model = occ::importModel(shape);
+    Model model = occ::importModel(shape);
     if (model.faces.empty()) {
         throw std::invalid_argument("NurbsLOD: the shape has no faces to tessellate");
     }
+    return model;
+}
+
+double absoluteTolerance(const Model& model, const ToleranceRequest& request) {
     if (request.absolute) {
-        options.tolerance = *request.absolute;
-    } else {
-        options.tolerance = *request.relative * model.boundingBoxDiagonal;
-        if (!(std::isfinite(options.tolerance) && options.tolerance > 0)) {
-            throw std::invalid_argument(
-                "NurbsLOD: the shape has an empty bounding box, so a relative tolerance means "
-                "nothing; give an absolute tolerance");
-        }
+        return *request.absolute;
     }
+    const double tolerance = *request.relative * model.boundingBoxDiagonal;
+    if (!(std::isfinite(tolerance) && tolerance > 0)) {
+        throw std::invalid_argument(
+            "NurbsLOD: the shape has an empty bounding box, so a relative tolerance means "
+            "nothing; give an absolute tolerance");
+    }
+    return tolerance;
+}
+
+// Runs without the GIL: reading, importing and tessellating are pure C++.
+TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
+                                    TessellationOptions options) {
+    const Model model = importSource(source);
+    options.tolerance = absoluteTolerance(model, request);
     return tessellateModel(model, options);
 }
 
@@ -274,6 +285,51 @@ py::object toMesh(const py::object& shape, std::optional<double> tolerance,
     return freecadMesh;
 }
 
+py::array_t<double> scalarArray(const std::vector<double>& values) {
+    return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::array_t<double> parameterArray(const std::vector<Point2>& parameters) {
+    py::array_t<double> array({static_cast<py::ssize_t>(parameters.size()), py::ssize_t{2}});
+    auto view = array.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+        view(i, 0) = parameters[static_cast<std::size_t>(i)].x();
+        view(i, 1) = parameters[static_cast<std::size_t>(i)].y();
+    }
+    return array;
+}
+
+py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance,
+                        std::optional<double> relative, const std::string& mode, int threads) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    TessellationResult result;
+    AnalysisMesh analysis;
+    {
+        py::gil_scoped_release release;
+        const Model model = importSource(call.source);
+        TessellationOptions options = call.options;
+        options.tolerance = absoluteTolerance(model, call.tolerance);
+        result = tessellateModel(model, options);
+        analysis = analysisMesh(model, result.mesh);
+    }
+    py::dict out;
+    out["points"] = vectorArray(analysis.points);
+    out["normals"] = vectorArray(analysis.normals);
+    out["parameters"] = parameterArray(analysis.parameters);
+    out["gaussian"] = scalarArray(analysis.gaussian);
+    out["mean"] = scalarArray(analysis.mean);
+    out["minimum"] = scalarArray(analysis.minimum);
+    out["maximum"] = scalarArray(analysis.maximum);
+    out["triangles"] = indexArray(analysis.triangles);
+    out["face_ids"] = py::array_t<std::int32_t>(
+        static_cast<py::ssize_t>(analysis.triangleFaces.size()), analysis.triangleFaces.data());
+    py::dict summary = summaryDict(result, call);
+    summary["vertices"] = analysis.points.size();
+    summary["singular_vertices"] = analysis.singularVertices;
+    out["summary"] = summary;
+    return out;
+}
+
 void translateOpenCascadeFailures() {
     py::register_exception_translator([](std::exception_ptr error) {
         try {
@@ -331,6 +387,27 @@ ValueError) for a file or shape that cannot be read.)");
 
 The format follows the extension: .obj (one group per face, "g FaceN"), .ply, .stl, .off.
 Returns the summary dict of tessellate(), with "output" (the path) added.)");
+
+    m.def("analysis_mesh", &analysisMeshOf, py::arg("shape"), py::arg("tolerance") = py::none(),
+          py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          R"(Tessellates the shape like tessellate() for surface analysis displays.
+
+Every vertex appears once per face that uses it, so each attribute is per vertex. Normals
+and curvatures are the exact surface's at the vertex, not the mesh's.
+
+Returns a dict of numpy arrays and a summary:
+  points      (N, 3) float64  vertex positions (a point on an edge once per face)
+  normals     (N, 3) float64  exact unit normals, outward (the face's orientation applied)
+  parameters  (N, 2) float64  (u, v) of the vertex on its face's NURBS surface
+  gaussian    (N,)   float64  Gaussian curvature (1/length^2)
+  mean        (N,)   float64  mean curvature (1/length)
+  minimum     (N,)   float64  principal curvatures, minimum <= maximum (1/length);
+  maximum     (N,)   float64    positive where the face is convex, like a sphere
+  triangles   (T, 3) uint32   indices into points
+  face_ids    (T,)   int32    1-based face index: shape.Faces[face_id - 1]
+  summary     dict: the keys of tessellate()'s summary (faces_failed lists the faces left
+              out, with the reason), vertices counted as here, and singular_vertices (vertices
+              at a singular point, a pole: normal and curvature taken from the limit inside))");
 
     m.def("to_mesh", &toMesh, py::arg("shape"), py::arg("tolerance") = py::none(),
           py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,

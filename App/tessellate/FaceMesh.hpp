@@ -16,6 +16,7 @@ struct FaceMesh {
         std::uint32_t sharedId = 0;
         Point3 position = Point3::Zero();  // for the face's own vertices
         Vector3 normal = Vector3::Zero();  // the face's exact normal at the vertex
+        Point2 uv = Point2::Zero();        // where the vertex lies on the face's surface
     };
     std::vector<Vertex> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise

@@ -684,6 +684,7 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         if (needsPosition[i]) mesh.vertices[i].position = surface.point(uv.x(), uv.y());
         Vector3 normal = surface.normal(uv.x(), uv.y());
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
+        mesh.vertices[i].uv = uv;
     }
     splitNeedles(mesh);
     if (face_.reversed)

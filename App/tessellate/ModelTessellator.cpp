@@ -382,6 +382,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 used.push_back(0);
             }
             mesh.normals.push_back(v.normal);
+            mesh.parameters.push_back(v.uv);
         }
         for (const auto& t : fm.triangles) {
             mesh.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});

@@ -1,0 +1,758 @@
+"""Surface-analysis overlays on Part objects: isophotes, reflection lines (zebra), curvature.
+
+    set_overlay(obj, "zebra", count=16, width_ratio=0.5, direction=(0, 1, 0), lock="camera")
+    set_overlay(obj, "isophotes", count=32, line_width=2, direction=(0.3, 0.5, 1), lock="camera")
+    set_overlay(obj, "curvature", curvature="mean", range=None, percentiles=(2, 98), levels=10)
+    set_overlay(obj, None)        # FreeCAD's own display again, exactly as it was
+
+The overlay is a mesh of the object at a fine tolerance from NurbsLOD.analysis_mesh: every
+vertex carries the exact surface normal and curvature, interpolated across the triangles, so
+the stripes show the surface's continuity and not the mesh's facets (appearance.txt,
+sections 5 and 6.3). GLSL shaders (Resources/shaders) draw it, attached through Coin's
+shader nodes. It is inserted into the object's view provider as one more child of its
+display-mode switch and shown instead of the shaded faces; the object's edges stay visible
+and its faces stay pickable (drawn invisible), so selection keeps working.
+
+Options common to every kind:
+  relative / tolerance   fineness of the overlay mesh (fraction of the bounding box
+                         diagonal, or absolute); default relative 2e-4
+  lock                   "camera" (light or tubes fixed to the viewer) or "object" (they turn
+                         with the object)
+Isophotes: count (lines over the intensity range), line_width (pixels), direction (towards
+  the light).
+Zebra: count or stripes (black stripes around a full turn of the reflected direction), width_ratio
+  (black fraction of each period), direction (axis of the light tubes).
+Curvature: curvature ("gaussian", "mean", "minimum", "maximum"), range ((low, high) overrides
+  the automatic range), percentiles (the automatic range: these percentiles of the vertex
+  values), levels (contour lines; 0 for none), legend (draw the colour bar).
+
+Defaults come from the parameter group User parameter:BaseApp/Preferences/Mod/NurbsLOD when
+set there (see PREFERENCES), else from DEFAULTS.
+"""
+
+import math
+import os
+
+import FreeCAD
+
+PARAMETER_GROUP = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+
+KINDS = ("isophotes", "zebra", "curvature")
+CURVATURE_KINDS = {
+    "gaussian": "gaussian",
+    "mean": "mean",
+    "minimum": "minimum",
+    "min": "minimum",
+    "maximum": "maximum",
+    "max": "maximum",
+}
+CURVATURE_TITLES = {
+    "gaussian": "Gaussian curvature",
+    "mean": "Mean curvature",
+    "minimum": "Minimum curvature",
+    "maximum": "Maximum curvature",
+}
+
+DEFAULTS = {
+    "common": {"relative": 2e-4, "tolerance": None},
+    "isophotes": {"count": 32, "line_width": 2.0, "direction": (0.3, 0.5, 1.0), "lock": "camera"},
+    "zebra": {"count": 16, "width_ratio": 0.5, "direction": (0.0, 1.0, 0.0), "lock": "camera"},
+    "curvature": {
+        "curvature": "mean",
+        "range": None,
+        "percentiles": (2.0, 98.0),
+        "levels": 10,
+        "legend": True,
+    },
+}
+
+# The order of the curvature kinds in the preferences page's combo box, which stores the
+# index (Gui::PrefComboBox).
+CURVATURE_KIND_ORDER = ("gaussian", "mean", "minimum", "maximum")
+
+# option -> (parameter name, type) in PARAMETER_GROUP; a parameter that is set wins over
+# DEFAULTS, an option given to set_overlay wins over both. The names of the preferences page
+# (Resources/ui/NurbsLODPreferences.ui) where it has the option.
+PREFERENCES = {
+    "common": {"relative": ("OverlayRelativeTolerance", "Float")},
+    "isophotes": {
+        "count": ("IsophoteCount", "Int"),
+        "line_width": ("IsophoteLineWidth", "Float"),
+        "lock": ("IsophoteLock", "String"),
+    },
+    "zebra": {
+        "count": ("ZebraStripeCount", "Int"),
+        "width_ratio": ("ZebraWidthRatio", "Float"),
+        "lock": ("ZebraLock", "String"),
+    },
+    "curvature": {
+        "curvature": ("CurvatureKind", "Int"),  # index into CURVATURE_KIND_ORDER
+        "levels": ("CurvatureLevels", "Int"),
+    },
+}
+
+# Other names an option answers to: zebra stripes=12 is count=12.
+ALIASES = {"zebra": {"stripes": "count"}, "isophotes": {"lines": "count"}}
+
+SHADER_DIR = os.path.join(
+    os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "Resources", "shaders"
+)
+FRAGMENT_SHADERS = {
+    "isophotes": "isophotes.frag",
+    "zebra": "zebra.frag",
+    "curvature": "curvature.frag",
+}
+NODE_NAME = "NurbsLODOverlay"
+
+# Blue (minimum) - cyan - green - yellow - red (maximum): the ramp of the map and its legend.
+RAMP_STOPS = (
+    (0.0, (0.0, 0.0, 1.0)),
+    (0.25, (0.0, 1.0, 1.0)),
+    (0.5, (0.0, 0.85, 0.0)),
+    (0.75, (1.0, 1.0, 0.0)),
+    (1.0, (1.0, 0.0, 0.0)),
+)
+
+# The overlays that are on: (document name, object name) -> _Overlay
+_overlays = {}
+
+
+def ramp_color(t):
+    """The curvature ramp's colour at t in [0, 1] (clamped), as an (r, g, b) tuple."""
+    t = min(max(float(t), 0.0), 1.0)
+    for (t0, c0), (t1, c1) in zip(RAMP_STOPS, RAMP_STOPS[1:]):
+        if t <= t1:
+            s = (t - t0) / (t1 - t0)
+            return tuple(a + s * (b - a) for a, b in zip(c0, c1))
+    return RAMP_STOPS[-1][1]
+
+
+def options_for(kind, options):
+    """The options set_overlay uses: DEFAULTS, overridden by the preferences that are set,
+    overridden by `options`. Raises ValueError naming an option the kind does not have."""
+    merged = dict(DEFAULTS["common"])
+    merged.update(DEFAULTS[kind])
+    try:
+        group = FreeCAD.ParamGet(PARAMETER_GROUP)
+        set_names = {
+            "Float": set(group.GetFloats()),
+            "Int": set(group.GetInts()),
+            "String": set(group.GetStrings()),
+        }
+        for section in ("common", kind):
+            for option, (name, type_name) in PREFERENCES[section].items():
+                if name in set_names[type_name]:
+                    value = getattr(group, "Get" + type_name)(name)
+                    if option == "curvature":
+                        value = CURVATURE_KIND_ORDER[value % len(CURVATURE_KIND_ORDER)]
+                    merged[option] = value
+    except Exception as error:  # preferences are a convenience: never fail for them
+        FreeCAD.Console.PrintWarning("NurbsLOD: overlay preferences not read: {}\n".format(error))
+    aliases = ALIASES.get(kind, {})
+    options = {aliases.get(name, name): value for name, value in options.items()}
+    unknown = set(options) - set(merged)
+    if unknown:
+        raise ValueError(
+            "NurbsLOD: set_overlay({!r}) has no option {}; it has {}".format(
+                kind, ", ".join(sorted(unknown)), ", ".join(sorted(merged))
+            )
+        )
+    merged.update(options)
+    if "tolerance" in options and options["tolerance"] is not None and "relative" not in options:
+        merged["relative"] = None
+    return _validated(kind, merged)
+
+
+def _positive(options, name, integer=False):
+    value = options[name]
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError("NurbsLOD: {} must be a number, got {!r}".format(name, value)) from None
+    if not (math.isfinite(number) and number > 0):
+        raise ValueError("NurbsLOD: {} must be positive and finite, got {!r}".format(name, value))
+    options[name] = int(round(number)) if integer else number
+
+
+def _direction(options):
+    value = options["direction"]
+    try:
+        x, y, z = (float(c) for c in value)
+    except (TypeError, ValueError):
+        raise ValueError(
+            "NurbsLOD: direction must be three numbers, got {!r}".format(value)
+        ) from None
+    length = math.sqrt(x * x + y * y + z * z)
+    if not (math.isfinite(length) and length > 0):
+        raise ValueError("NurbsLOD: direction must be a non-zero vector, got {!r}".format(value))
+    options["direction"] = (x / length, y / length, z / length)
+
+
+def _validated(kind, options):
+    if options.get("tolerance") is not None:
+        _positive(options, "tolerance")
+        options["relative"] = None
+    else:
+        _positive(options, "relative")
+    if kind in ("isophotes", "zebra"):
+        _positive(options, "count", integer=True)
+        _direction(options)
+        if options["lock"] not in ("camera", "object"):
+            raise ValueError(
+                'NurbsLOD: lock must be "camera" or "object", got {!r}'.format(options["lock"])
+            )
+    if kind == "isophotes":
+        _positive(options, "line_width")
+    if kind == "zebra":
+        _positive(options, "width_ratio")
+        if not options["width_ratio"] < 1:
+            raise ValueError(
+                "NurbsLOD: width_ratio must be in (0, 1), got {!r}".format(options["width_ratio"])
+            )
+    if kind == "curvature":
+        name = str(options["curvature"]).lower()
+        if name not in CURVATURE_KINDS:
+            raise ValueError(
+                "NurbsLOD: curvature must be one of {}, got {!r}".format(
+                    ", ".join(sorted(set(CURVATURE_KINDS.values()))), options["curvature"]
+                )
+            )
+        options["curvature"] = CURVATURE_KINDS[name]
+        low, high = (float(p) for p in options["percentiles"])
+        if not (0 <= low < high <= 100):
+            raise ValueError(
+                "NurbsLOD: percentiles must be 0 <= low < high <= 100, got {!r}".format(
+                    options["percentiles"]
+                )
+            )
+        options["percentiles"] = (low, high)
+        if options["range"] is not None:
+            low, high = (float(v) for v in options["range"])
+            if not (math.isfinite(low) and math.isfinite(high) and low < high):
+                raise ValueError(
+                    "NurbsLOD: range must be (low, high) with low < high, got {!r}".format(
+                        options["range"]
+                    )
+                )
+            options["range"] = (low, high)
+        levels = int(options["levels"])
+        if levels < 0:
+            raise ValueError("NurbsLOD: levels must be >= 0, got {!r}".format(options["levels"]))
+        options["levels"] = levels
+        options["legend"] = bool(options["legend"])
+    return options
+
+
+def curvature_range(values, percentiles=(2.0, 98.0), weights=None):
+    """The automatic range of a curvature map: the given percentiles of the vertex values,
+    weighted by `weights` (the area around each vertex: an adaptive mesh crowds its vertices
+    where the surface bends, which would skew plain percentiles), widened to a non-empty
+    interval (a plane or a cylinder's Gaussian curvature is constant)."""
+    import numpy as np
+
+    values = np.asarray(values, dtype=float)
+    weights = np.ones_like(values) if weights is None else np.asarray(weights, dtype=float)
+    keep = np.isfinite(values) & np.isfinite(weights) & (weights >= 0)
+    values, weights = values[keep], weights[keep]
+    if values.size == 0 or not weights.sum() > 0:
+        return (-1.0, 1.0)
+    order = np.argsort(values)
+    values, cumulative = values[order], np.cumsum(weights[order])
+    cumulative /= cumulative[-1]
+    low, high = (
+        float(values[min(np.searchsorted(cumulative, p / 100.0), values.size - 1)])
+        for p in percentiles
+    )
+    if not high > low:
+        pad = max(abs(low) * 1e-3, 1e-12)
+        low, high = low - pad, high + pad
+    return (low, high)
+
+
+def vertex_areas(analysis):
+    """A third of the area of the triangles around each vertex of an analysis mesh."""
+    import numpy as np
+
+    points, triangles = analysis["points"], analysis["triangles"].astype(np.int64)
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    areas = np.zeros(len(points))
+    for k in range(3):
+        np.add.at(areas, triangles[:, k], area / 3.0)
+    return areas
+
+
+def _view_provider_switch(obj):
+    """The display-mode switch of the object's view provider (FreeCAD's ModeSwitch)."""
+    from pivy import coin
+
+    view = getattr(obj, "ViewObject", None)
+    if view is None:
+        raise ValueError(
+            "NurbsLOD: {} has no view provider (run in the FreeCAD GUI)".format(obj.Name)
+        )
+    root = view.RootNode
+    for i in range(root.getNumChildren()):
+        child = root.getChild(i)
+        if child.isOfType(coin.SoSwitch.getClassTypeId()):
+            return root, child
+    raise ValueError("NurbsLOD: {}'s view provider has no display-mode switch".format(obj.Name))
+
+
+def _local_shape(obj):
+    """The object's shape in the coordinates of its view provider, whose Transform node
+    applies the object's Placement."""
+    shape = getattr(obj, "Shape", None)
+    if shape is None or shape.isNull():
+        raise ValueError("NurbsLOD: {} has no shape to analyse".format(obj.Name))
+    if not shape.Faces:
+        raise ValueError("NurbsLOD: {} has no faces to analyse".format(obj.Name))
+    local = shape.copy()
+    placement = getattr(obj, "Placement", None)
+    if placement is not None:
+        local.Placement = placement.inverse().multiply(shape.Placement)
+    return local
+
+
+def _contains_face_set(node):
+    from pivy import coin
+
+    search = coin.SoSearchAction()
+    search.setType(coin.SoIndexedFaceSet.getClassTypeId())
+    search.setInterest(coin.SoSearchAction.FIRST)
+    search.apply(node)
+    return search.getPath() is not None
+
+
+class _Overlay:
+    """One object's overlay: its nodes, the analysis mesh they show, and how to undo them."""
+
+    def __init__(self, obj):
+        self.document = obj.Document.Name
+        self.name = obj.Name
+        self.root, self.switch = _view_provider_switch(obj)
+        self.saved_child = self.switch.whichChild.getValue()
+        self.analysis = None
+        self.analysis_key = None
+        self.group = None
+        self.kind = None
+        self.options = None
+
+    # the mesh -----------------------------------------------------------------------------
+    def analysis_for(self, obj, options):
+        import NurbsLOD
+
+        shape = _local_shape(obj)
+        key = (hash(shape.exportBrepToString()), options.get("tolerance"), options.get("relative"))
+        if self.analysis is None or key != self.analysis_key:
+            if options.get("tolerance") is not None:
+                self.analysis = NurbsLOD.analysis_mesh(shape, tolerance=options["tolerance"])
+            else:
+                self.analysis = NurbsLOD.analysis_mesh(shape, relative=options["relative"])
+            self.analysis_key = key
+            failed = self.analysis["summary"]["faces_failed"]
+            if failed:
+                FreeCAD.Console.PrintWarning(
+                    "NurbsLOD: the overlay of {} leaves out {} face(s): {}\n".format(
+                        obj.Label,
+                        len(failed),
+                        "; ".join("Face{}: {}".format(f["face"], f["reason"]) for f in failed),
+                    )
+                )
+        return self.analysis
+
+    # the scene ----------------------------------------------------------------------------
+    def build(self, kind, options):
+        from pivy import coin
+
+        analysis = self.analysis
+        group = coin.SoSeparator()
+        group.setName(NODE_NAME)
+
+        # What the display mode showed besides its faces (edges, vertices), shared, and its
+        # faces drawn invisible: they stay pickable, so selection works as before.
+        mode = self.switch.getChild(self.saved_child) if self.saved_child >= 0 else None
+        if mode is not None:
+            faces = []
+            if self._is_face_part(mode) or not mode.isOfType(coin.SoGroup.getClassTypeId()):
+                faces.append(mode)  # "Shaded": the mode is the faces
+            else:
+                for i in range(mode.getNumChildren()):
+                    child = mode.getChild(i)
+                    if child.isOfType(coin.SoPolygonOffset.getClassTypeId()):
+                        continue
+                    if _contains_face_set(child):
+                        faces.append(child)
+                    else:
+                        group.addChild(child)
+            if faces:
+                picking = coin.SoSeparator()
+                style = coin.SoDrawStyle()
+                style.style = coin.SoDrawStyle.INVISIBLE
+                style.setOverride(True)
+                picking.addChild(style)
+                for face in faces:
+                    picking.addChild(face)
+                group.addChild(picking)
+
+        surface = coin.SoSeparator()
+        pick_style = coin.SoPickStyle()
+        pick_style.style = coin.SoPickStyle.UNPICKABLE
+        surface.addChild(pick_style)
+        offset = coin.SoPolygonOffset()  # edges in front of the faces, as FreeCAD draws them
+        surface.addChild(offset)
+        hints = coin.SoShapeHints()
+        hints.vertexOrdering = coin.SoShapeHints.UNKNOWN_ORDERING  # both sides are shaded
+        surface.addChild(hints)
+        surface.addChild(self._shader(kind, options))
+
+        coordinates = coin.SoCoordinate3()
+        coordinates.point.setValues(0, len(analysis["points"]), analysis["points"].tolist())
+        surface.addChild(coordinates)
+        normals = coin.SoNormal()
+        normals.vector.setValues(0, len(analysis["normals"]), analysis["normals"].tolist())
+        surface.addChild(normals)
+        binding = coin.SoNormalBinding()
+        binding.value = coin.SoNormalBinding.PER_VERTEX_INDEXED
+        surface.addChild(binding)
+        if kind == "curvature":
+            values = analysis[options["curvature"]]
+            texture = coin.SoTexture2()  # the ramp; also makes Coin send the coordinates
+            size = 256
+            pixels = bytes(
+                int(round(255 * c)) for i in range(size) for c in ramp_color(i / (size - 1))
+            )
+            texture.image.setValue(coin.SbVec2s(size, 1), 3, pixels)
+            texture.wrapS = coin.SoTexture2.CLAMP
+            texture.wrapT = coin.SoTexture2.CLAMP
+            surface.addChild(texture)
+            texture_coordinates = coin.SoTextureCoordinate2()
+            texture_coordinates.point.setValues(0, len(values), [(float(v), 0.5) for v in values])
+            surface.addChild(texture_coordinates)
+            texture_binding = coin.SoTextureCoordinateBinding()
+            texture_binding.value = coin.SoTextureCoordinateBinding.PER_VERTEX_INDEXED
+            surface.addChild(texture_binding)
+        face_set = coin.SoIndexedFaceSet()
+        import numpy as np
+
+        triangles = analysis["triangles"].astype(np.int64)
+        index = np.hstack([triangles, -np.ones((len(triangles), 1), dtype=np.int64)]).ravel()
+        face_set.coordIndex.setValues(0, len(index), index.tolist())
+        surface.addChild(face_set)
+        group.addChild(surface)
+
+        if kind == "curvature" and options["legend"]:
+            group.addChild(self._legend(options))
+        return group
+
+    def _is_face_part(self, node):
+        """True when node is a display mode made of the faces alone (FreeCAD's "Shaded")."""
+        from pivy import coin
+
+        if not node.isOfType(coin.SoGroup.getClassTypeId()):
+            return False
+        for i in range(node.getNumChildren()):
+            if node.getChild(i).isOfType(coin.SoIndexedFaceSet.getClassTypeId()):
+                return True
+        return False
+
+    def _shader(self, kind, options):
+        from pivy import coin
+
+        def source(name):
+            with open(os.path.join(SHADER_DIR, name), encoding="utf-8") as f:
+                return f.read()
+
+        vertex = coin.SoVertexShader()
+        vertex.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+        vertex.sourceProgram = source("surface_analysis.vert")
+        fragment = coin.SoFragmentShader()
+        fragment.sourceType = coin.SoShaderObject.GLSL_PROGRAM
+        fragment.sourceProgram = source(FRAGMENT_SHADERS[kind])
+
+        def parameter(node_type, name, value):
+            node = node_type()
+            node.name = name
+            node.value = value
+            fragment.parameter.set1Value(fragment.parameter.getNum(), node)
+
+        if kind == "isophotes":
+            direction = coin.SbVec3f(*options["direction"])
+            parameter(coin.SoShaderParameter3f, "lightDirection", direction)
+            parameter(coin.SoShaderParameter1i, "lockToObject", int(options["lock"] == "object"))
+            parameter(coin.SoShaderParameter1f, "lineCount", float(options["count"]))
+            parameter(coin.SoShaderParameter1f, "lineWidth", float(options["line_width"]))
+            parameter(coin.SoShaderParameter3f, "surfaceColor", coin.SbVec3f(0.85, 0.85, 0.88))
+            parameter(coin.SoShaderParameter3f, "lineColor", coin.SbVec3f(0.05, 0.05, 0.1))
+        elif kind == "zebra":
+            direction = coin.SbVec3f(*options["direction"])
+            parameter(coin.SoShaderParameter3f, "tubeDirection", direction)
+            parameter(coin.SoShaderParameter1i, "lockToObject", int(options["lock"] == "object"))
+            parameter(coin.SoShaderParameter1f, "stripeCount", float(options["count"]))
+            parameter(coin.SoShaderParameter1f, "widthRatio", float(options["width_ratio"]))
+            parameter(coin.SoShaderParameter3f, "lightColor", coin.SbVec3f(1.0, 1.0, 1.0))
+            parameter(coin.SoShaderParameter3f, "darkColor", coin.SbVec3f(0.0, 0.0, 0.0))
+        else:
+            low, high = options["shown_range"]
+            parameter(coin.SoShaderParameter1f, "rangeMinimum", float(low))
+            parameter(coin.SoShaderParameter1f, "rangeMaximum", float(high))
+            parameter(coin.SoShaderParameter1f, "levelCount", float(options["levels"]))
+            parameter(coin.SoShaderParameter1i, "ramp", 0)
+
+        program = coin.SoShaderProgram()
+        program.shaderObject.set1Value(0, vertex)
+        program.shaderObject.set1Value(1, fragment)
+        return program
+
+    def _legend(self, options):
+        """A colour bar with its values and title at the left of the view (a 2D overlay: an
+        annotation with its own orthographic camera), left out of the bounding box."""
+        from pivy import coin
+
+        low, high = options["shown_range"]
+        skip = coin.SoType.fromName(coin.SbName("SoSkipBoundingGroup"))
+        legend = skip.createInstance() if not skip.isBad() else coin.SoSeparator()
+        annotation = coin.SoAnnotation()
+        legend.addChild(annotation)
+        pick_style = coin.SoPickStyle()
+        pick_style.style = coin.SoPickStyle.UNPICKABLE
+        annotation.addChild(pick_style)
+        camera = coin.SoOrthographicCamera()
+        camera.viewportMapping = coin.SoCamera.LEAVE_ALONE  # x, y in [-1, 1] span the view
+        camera.position = coin.SbVec3f(0, 0, 5)
+        camera.height = 2
+        camera.nearDistance = 1
+        camera.farDistance = 10
+        annotation.addChild(camera)
+        light_model = coin.SoLightModel()
+        light_model.model = coin.SoLightModel.BASE_COLOR
+        annotation.addChild(light_model)
+
+        # a light panel under the bar and the words keeps them readable on any background
+        panel = coin.SoSeparator()
+        panel_color = coin.SoBaseColor()
+        panel_color.rgb = (0.93, 0.93, 0.93)
+        panel.addChild(panel_color)
+        panel_corners = coin.SoCoordinate3()
+        panel_corners.point.setValues(
+            0, 4, [(-0.97, -0.76, 0), (-0.50, -0.76, 0), (-0.50, 0.89, 0), (-0.97, 0.89, 0)]
+        )
+        panel.addChild(panel_corners)
+        panel_face = coin.SoFaceSet()
+        panel_face.numVertices.setValue(4)
+        panel.addChild(panel_face)
+        annotation.addChild(panel)
+
+        steps = 32
+        x0, x1, y0, y1 = -0.94, -0.90, -0.7, 0.7  # left: a view centres its object
+        points, colors, index = [], [], []
+        for i in range(steps + 1):
+            y = y0 + (y1 - y0) * i / steps
+            points += [(x0, y, 0), (x1, y, 0)]
+            colors += [ramp_color(i / steps)] * 2
+        for i in range(steps):
+            a = 2 * i
+            index += [a, a + 1, a + 3, a + 2, -1]
+        bar = coin.SoSeparator()
+        material = coin.SoMaterial()
+        material.diffuseColor.setValues(0, len(colors), colors)
+        bar.addChild(material)
+        binding = coin.SoMaterialBinding()
+        binding.value = coin.SoMaterialBinding.PER_VERTEX_INDEXED
+        bar.addChild(binding)
+        coordinates = coin.SoCoordinate3()
+        coordinates.point.setValues(0, len(points), points)
+        bar.addChild(coordinates)
+        faces = coin.SoIndexedFaceSet()
+        faces.coordIndex.setValues(0, len(index), index)
+        bar.addChild(faces)
+        annotation.addChild(bar)
+
+        text = coin.SoSeparator()
+        color = coin.SoBaseColor()
+        color.rgb = (0.0, 0.0, 0.0)
+        text.addChild(color)
+        font = coin.SoFont()
+        font.size = 14
+        text.addChild(font)
+        ticks = 5
+        for i in range(ticks):
+            t = i / (ticks - 1)
+            label = coin.SoSeparator()
+            move = coin.SoTranslation()
+            move.translation = (x1 + 0.01, y0 + (y1 - y0) * t - 0.01, 0)
+            label.addChild(move)
+            words = coin.SoText2()
+            value = low + (high - low) * t
+            if abs(value) < 1e-6 * (high - low):  # rounding noise of a zero
+                value = 0.0
+            words.string = "{:.4g}".format(value)
+            label.addChild(words)
+            text.addChild(label)
+        title = coin.SoSeparator()
+        move = coin.SoTranslation()
+        move.translation = (x0, y1 + 0.11, 0)  # two lines above the bar
+        title.addChild(move)
+        words = coin.SoText2()
+        unit = "1/mm^2" if options["curvature"] == "gaussian" else "1/mm"
+        words.string.setValues(0, 2, [CURVATURE_TITLES[options["curvature"]], "[{}]".format(unit)])
+        title.addChild(words)
+        text.addChild(title)
+        annotation.addChild(text)
+        return legend
+
+    def show(self, group):
+        """Puts the overlay in the switch (replacing a previous one) and selects it."""
+        self.remove_nodes()
+        self.switch.addChild(group)
+        self.group = group
+        self.switch.whichChild = self.switch.getNumChildren() - 1
+
+    def remove_nodes(self):
+        if self.group is None:
+            return
+        index = self.switch.findChild(self.group)
+        showing = index >= 0 and self.switch.whichChild.getValue() == index
+        if index >= 0:
+            self.switch.removeChild(index)
+        if showing:
+            self.switch.whichChild = self.saved_child
+        self.group = None
+
+
+def _key(obj):
+    return (obj.Document.Name, obj.Name)
+
+
+def set_overlay(obj, kind, **options):
+    """Shows an analysis overlay on the object instead of its shaded faces, or (kind None)
+    removes it and restores FreeCAD's display exactly.
+
+    kind: "isophotes", "zebra", "curvature" or None; options: see the module's help.
+    Returns a dict: kind, the options used, triangles and vertices of the overlay mesh,
+    faces_failed (faces left out, with the reason) and, for "curvature", range (the values
+    at the ends of the colour ramp). Raises ValueError for a bad kind, option or object.
+    """
+    if kind is None:
+        overlay = _overlays.pop(_key(obj), None)
+        if overlay is not None:
+            overlay.remove_nodes()
+        return {"kind": None}
+    if kind not in KINDS:
+        raise ValueError(
+            "NurbsLOD: kind must be one of {} or None, got {!r}".format(", ".join(KINDS), kind)
+        )
+    options = options_for(kind, options)
+    overlay = _overlays.get(_key(obj))
+    if overlay is None:
+        overlay = _Overlay(obj)
+    analysis = overlay.analysis_for(obj, options)
+    if len(analysis["triangles"]) == 0:
+        raise ValueError("NurbsLOD: no face of {} could be tessellated".format(obj.Label))
+    if kind == "curvature":
+        values = analysis[options["curvature"]]
+        options["shown_range"] = (
+            options["range"]
+            if options["range"] is not None
+            else curvature_range(values, options["percentiles"], vertex_areas(analysis))
+        )
+    group = overlay.build(kind, options)
+    overlay.show(group)
+    overlay.kind = kind
+    overlay.options = options
+    _overlays[_key(obj)] = overlay
+    summary = analysis["summary"]
+    result = {
+        "kind": kind,
+        "options": dict(options),
+        "triangles": int(len(analysis["triangles"])),
+        "vertices": int(len(analysis["points"])),
+        "faces_failed": list(summary["faces_failed"]),
+    }
+    if kind == "curvature":
+        result["range"] = options["shown_range"]
+    return result
+
+
+def overlay_of(obj):
+    """The kind of overlay the object shows, or None."""
+    overlay = _overlays.get(_key(obj))
+    return overlay.kind if overlay is not None else None
+
+
+def refresh_overlay(obj):
+    """Rebuilds the object's overlay from its current shape (after an edit); a no-op when it
+    has none. Returns set_overlay's dict, or None."""
+    overlay = _overlays.get(_key(obj))
+    if overlay is None:
+        return None
+    options = {k: v for k, v in overlay.options.items() if k != "shown_range"}
+    return set_overlay(obj, overlay.kind, **options)
+
+
+# Commands, for the workbench's menu and toolbar: each shows its overlay (with the defaults
+# and preferences) on the selected Part objects; the last one removes any overlay.
+COMMANDS = {
+    "NurbsLOD_Isophotes": ("isophotes", "Isophotes", "Show isophotes of the exact surface"),
+    "NurbsLOD_Zebra": ("zebra", "Reflection lines (zebra)", "Show reflection lines (zebra "
+                       "stripes) of the exact surface: a kink where faces meet G1, not G2"),
+    "NurbsLOD_CurvatureMap": ("curvature", "Curvature map", "Colour the surface by its "
+                              "curvature (kind and range from the preferences), with a legend"),
+    "NurbsLOD_OverlayOff": (None, "Remove overlay", "Show FreeCAD's own display again"),
+}
+
+
+def _selected_objects():
+    import FreeCADGui
+
+    return [
+        obj
+        for obj in FreeCADGui.Selection.getSelection()
+        if hasattr(obj, "Shape") and getattr(obj, "ViewObject", None) is not None
+    ]
+
+
+class OverlayCommand:
+    def __init__(self, kind, menu_text, tool_tip):
+        self.kind, self.menu_text, self.tool_tip = kind, menu_text, tool_tip
+
+    def GetResources(self):
+        import NurbsLODPaths
+
+        return {
+            "Pixmap": NurbsLODPaths.icon("NurbsLOD.svg"),
+            "MenuText": self.menu_text,
+            "ToolTip": self.tool_tip,
+        }
+
+    def IsActive(self):
+        objects = _selected_objects()
+        if self.kind is None:
+            return any(overlay_of(obj) is not None for obj in objects)
+        return bool(objects)
+
+    def Activated(self):
+        from PySide import QtCore, QtGui
+
+        QtGui.QApplication.setOverrideCursor(QtGui.QCursor(QtCore.Qt.WaitCursor))
+        try:
+            for obj in _selected_objects():
+                try:  # a command must not raise: tell the user instead
+                    set_overlay(obj, self.kind)
+                except Exception as error:
+                    FreeCAD.Console.PrintError(
+                        "NurbsLOD: no overlay on {}: {}\n".format(obj.Label, error)
+                    )
+        finally:
+            QtGui.QApplication.restoreOverrideCursor()
+
+
+def register_commands():
+    """Adds the overlay commands to FreeCAD (once); returns their names in menu order."""
+    import FreeCADGui
+
+    known = set(FreeCADGui.listCommands())
+    for name, (kind, menu_text, tool_tip) in COMMANDS.items():
+        if name not in known:
+            FreeCADGui.addCommand(name, OverlayCommand(kind, menu_text, tool_tip))
+    return list(COMMANDS)
