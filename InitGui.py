@@ -13,6 +13,7 @@ class NurbsLODWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench he
     def Initialize(self):
         import NurbsLODAdaptiveCommand
         import NurbsLODExportCommand
+        import NurbsLODOverlays
         import NurbsLODPoleEditor
 
         commands = [
@@ -22,6 +23,9 @@ class NurbsLODWorkbench(Workbench):  # noqa: F821 (FreeCAD provides Workbench he
         ]
         self.appendToolbar("NurbsLOD", commands)
         self.appendMenu("NurbsLOD", commands)
+        overlays = NurbsLODOverlays.register_commands()
+        self.appendToolbar("NurbsLOD analysis", overlays)
+        self.appendMenu(["NurbsLOD", "Surface analysis"], overlays)
 
     def GetClassName(self):
         return "Gui::PythonWorkbench"

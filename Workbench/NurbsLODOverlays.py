@@ -701,6 +701,13 @@ COMMANDS = {
     "NurbsLOD_OverlayOff": (None, "Remove overlay", "Show FreeCAD's own display again"),
 }
 
+ICONS = {
+    "isophotes": "NurbsLODIsophotes.svg",
+    "zebra": "NurbsLODZebra.svg",
+    "curvature": "NurbsLODCurvature.svg",
+    None: "NurbsLODOverlayOff.svg",
+}
+
 
 def _selected_objects():
     import FreeCADGui
@@ -720,7 +727,7 @@ class OverlayCommand:
         import NurbsLODPaths
 
         return {
-            "Pixmap": NurbsLODPaths.icon("NurbsLOD.svg"),
+            "Pixmap": NurbsLODPaths.icon(ICONS[self.kind]),
             "MenuText": self.menu_text,
             "ToolTip": self.tool_tip,
         }

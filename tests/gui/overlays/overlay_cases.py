@@ -3,9 +3,8 @@ two-patch surfaces that meet G1-not-G2 and G2, with screenshots, and assertions 
 the screenshots.
 
 Each test is a function of a Context (the document with the test surfaces, the view, the
-screenshot folder). Two front ends run them: overlay_gui_test.py (a FreeCAD macro, run by
-tests/gui/run_overlay_tests.sh) and tests/gui/test_overlays.py (unittest, for a runner that
-discovers tests/gui/test_*.py). Raises unittest.SkipTest where the input is missing.
+screenshot folder). tests/gui/test_overlays.py turns them into unittest tests for
+tests/gui/run_gui_tests.py. Raises unittest.SkipTest where the input is missing.
 """
 
 import os
