@@ -21,12 +21,10 @@ void basisFunctions(const KnotVector& knots, int span, double t, double* out) {
     }
 }
 
-void basisFunctionsWithDerivative(const KnotVector& knots, int span, double t, double* values,
-                                  double* derivatives) {
+void basisFunctionTable(const KnotVector& knots, int span, double t,
+                        double (*ndu)[kMaxDegree + 1]) {
     const int p = knots.degree();
     const auto& U = knots.knots();
-    // ndu holds the basis functions (upper triangle) and knot differences (lower triangle)
-    double ndu[kMaxDegree + 1][kMaxDegree + 1];
     double left[kMaxDegree + 1], right[kMaxDegree + 1];
     ndu[0][0] = 1.0;
     for (int j = 1; j <= p; ++j) {
@@ -41,6 +39,13 @@ void basisFunctionsWithDerivative(const KnotVector& knots, int span, double t, d
         }
         ndu[j][j] = saved;
     }
+}
+
+void basisFunctionsWithDerivative(const KnotVector& knots, int span, double t, double* values,
+                                  double* derivatives) {
+    const int p = knots.degree();
+    double ndu[kMaxDegree + 1][kMaxDegree + 1];
+    basisFunctionTable(knots, span, t, ndu);
     for (int j = 0; j <= p; ++j) values[j] = ndu[j][p];
     if (p == 0) {
         derivatives[0] = 0.0;

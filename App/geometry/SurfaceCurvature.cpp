@@ -15,26 +15,12 @@ namespace {
 void basisFunctionSecondDerivatives(const KnotVector& knots, int span, double t,
                                     double (*derivatives)[kMaxDegree + 1]) {
     const int p = knots.degree();
-    const auto& U = knots.knots();
     const int order = std::min(2, p);
     double ndu[kMaxDegree + 1][kMaxDegree + 1];
-    double left[kMaxDegree + 1], right[kMaxDegree + 1];
     auto divide = [](double numerator, double denominator) {
         return denominator != 0.0 ? numerator / denominator : 0.0;
     };
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-        left[j] = t - U[span + 1 - j];
-        right[j] = U[span + j] - t;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];  // knot differences, lower triangle
-            const double temp = divide(ndu[r][j - 1], ndu[j][r]);
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
+    basisFunctionTable(knots, span, t, ndu);
     for (int k = 0; k <= 2; ++k)
         for (int r = 0; r <= p; ++r) derivatives[k][r] = k == 0 ? ndu[r][p] : 0.0;
     for (int r = 0; r <= p; ++r) {
