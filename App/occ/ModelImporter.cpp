@@ -25,7 +25,10 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
 #include <cmath>
+#include <limits>
 #include <optional>
+
+#include "occ/ClosedSurfaceUnwrapper.hpp"
 
 namespace nurbslod::occ {
 
@@ -122,7 +125,7 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
 namespace {
 
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                    const TopTools_IndexedMapOfShape& edges) {
+                    const TopTools_IndexedMapOfShape& edges, std::vector<TopoDS_Edge>& curveEdges) {
     TrimLoop loop;
     std::vector<TopoDS_Edge> ordered;
     for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
@@ -150,8 +153,29 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
         curve.seam = BRep_Tool::IsClosed(edge, face);
         curve.degenerated = BRep_Tool::Degenerated(edge);
         loop.curves.push_back(std::move(curve));
+        curveEdges.push_back(edge);
     }
     return loop;
+}
+
+// A box around the loops' pcurves over their edge ranges: the control points whose basis
+// functions reach into [first, last] (convex hull property, weights > 0).
+std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
+    Point2 low = Point2::Constant(std::numeric_limits<double>::max()), high = -low;
+    for (const auto& loop : loops)
+        for (const auto& curve : loop.curves) {
+            const auto& knots = curve.pcurve.knots();
+            const auto& poles = curve.pcurve.poles();
+            if (curve.pcurve.problem()) continue;
+            const int from = knots.findSpan(curve.first) - knots.degree();
+            const int to = knots.findSpan(curve.last);
+            for (int i = std::max(0, from); i <= to && i < static_cast<int>(poles.size()); ++i) {
+                const Point2 p = poles[i].head<2>() / poles[i][2];
+                low = low.cwiseMin(p);
+                high = high.cwiseMax(p);
+            }
+        }
+    return {low, high};
 }
 
 TrimmedSurface importFace(const TopoDS_Face& face, int index,
@@ -159,15 +183,39 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
-    result.surface = toBSplineSurface(faceSurfaceAsBSpline(face));
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    std::vector<std::vector<TopoDS_Edge>> curveEdges;
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
         const TopoDS_Wire wire = TopoDS::Wire(it.Current());
-        TrimLoop loop = importLoop(wire, face, edges);
+        std::vector<TopoDS_Edge> loopEdges;
+        TrimLoop loop = importLoop(wire, face, edges, loopEdges);
         loop.outer = wire.IsSame(outer);
-        if (!loop.curves.empty()) result.loops.push_back(std::move(loop));
+        if (!loop.curves.empty()) {
+            result.loops.push_back(std::move(loop));
+            curveEdges.push_back(std::move(loopEdges));
+        }
     }
     if (result.loops.empty()) throw Standard_Failure("the face has no trimming loop");
+    // The pcurves may wind over more than the one turn a closed surface's NURBS form covers
+    // (a thread on a cylinder): the surface is unwrapped to cover them, and the pcurves are
+    // carried onto it.
+    const Handle(Geom_BSplineSurface) surface = faceSurfaceAsBSpline(face);
+    const auto [low, high] = pcurveBounds(result.loops);
+    const Handle(Geom_BSplineSurface) unwrapped =
+        unwrapClosedSurface(surface, low.x(), high.x(), low.y(), high.y());
+    if (unwrapped != surface) {
+        for (size_t l = 0; l < result.loops.size(); ++l)
+            for (size_t c = 0; c < result.loops[l].curves.size(); ++c) {
+                TrimCurve& curve = result.loops[l].curves[c];
+                double first = 0, last = 0;
+                const Handle(Geom2d_Curve) converted =
+                    BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
+                if (curve.degenerated) continue;  // a point in 3D: its (u, v) line stays
+                curve.pcurve = toCurve(pcurveOnUnwrappedSurface(
+                    curveEdges[l][c], unwrapped, converted, curve.first, curve.last));
+            }
+    }
+    result.surface = toBSplineSurface(unwrapped);
     return result;
 }
 
