@@ -1,14 +1,9 @@
 #include "occ/ClosedSurfaceUnwrapper.hpp"
 
-#include <BRepAdaptor_Curve.hxx>
-#include <Geom2dAPI_Interpolate.hxx>
-#include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
-#include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
-#include <TColgp_HArray1OfPnt2d.hxx>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -102,63 +97,6 @@ Handle(Geom_BSplineSurface)
     if (unwrapped == exchanged) return result;
     unwrapped->ExchangeUV();
     return unwrapped;
-}
-
-namespace {
-
-// The (u, v) of the surface point nearest to `point`, by Gauss-Newton steps from `start`.
-gp_Pnt2d projectNear(const Handle(Geom_BSplineSurface) & surface, const gp_Pnt& point,
-                     gp_Pnt2d start) {
-    double u = start.X(), v = start.Y();
-    for (int iteration = 0; iteration < 50; ++iteration) {
-        gp_Pnt p;
-        gp_Vec du, dv;
-        surface->D1(u, v, p, du, dv);
-        const gp_Vec r(p, point);
-        const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
-        const double ru = du.Dot(r), rv = dv.Dot(r);
-        const double det = a * c - b * b;
-        if (!(std::abs(det) > 1e-300)) break;
-        const double stepU = (c * ru - b * rv) / det, stepV = (a * rv - b * ru) / det;
-        u += stepU;
-        v += stepV;
-        if (std::abs(stepU) + std::abs(stepV) < 1e-15 * (1 + std::abs(u) + std::abs(v))) break;
-    }
-    return {u, v};
-}
-
-}  // namespace
-
-Handle(Geom2d_BSplineCurve)
-    pcurveOnUnwrappedSurface(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
-                             const Handle(Geom2d_Curve) & guess, double first, double last) {
-    const BRepAdaptor_Curve curve(edge);
-    double size = 1;
-    for (int i = 1; i <= surface->NbUPoles(); ++i)
-        for (int j = 1; j <= surface->NbVPoles(); ++j)
-            size = std::max(size, surface->Pole(i, j).XYZ().Modulus());
-    auto sampleAt = [&](double t) { return projectNear(surface, curve.Value(t), guess->Value(t)); };
-    for (int samples = 64; samples <= 16384; samples *= 2) {
-        Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, samples + 1);
-        Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, samples + 1);
-        for (int k = 0; k <= samples; ++k) {
-            const double t = first + (last - first) * k / samples;
-            parameters->SetValue(k + 1, t);
-            points->SetValue(k + 1, sampleAt(t));
-        }
-        Geom2dAPI_Interpolate interpolate(points, parameters, Standard_False, 1e-12);
-        interpolate.Perform();
-        if (!interpolate.IsDone()) break;
-        Handle(Geom2d_BSplineCurve) result = interpolate.Curve();
-        double worst = 0;
-        for (int k = 0; k < samples; ++k) {
-            const double t = first + (last - first) * (k + 0.5) / samples;
-            const gp_Pnt2d uv = result->Value(t);
-            worst = std::max(worst, surface->Value(uv.X(), uv.Y()).Distance(curve.Value(t)));
-        }
-        if (worst <= 1e-9 * size || samples == 16384) return result;
-    }
-    throw Standard_Failure("a trimming curve could not be carried onto the unwrapped surface");
 }
 
 }  // namespace nurbslod::occ

@@ -15,21 +15,3 @@ Handle(Geom_BSplineSurface) unwrapClosedSurface(const Handle(Geom_BSplineSurface
                                                 double uMin, double uMax, double vMin, double vMax);
 
 }  // namespace nurbslod::occ
-
-#include <Geom2d_BSplineCurve.hxx>
-#include <TopoDS_Edge.hxx>
-
-namespace nurbslod::occ {
-
-// The edge's curve on an unwrapped surface, over the edge parameter range [first, last]. The
-// pcurves that BRepBuilderAPI_NurbsConvert makes are right only over the turn its surface
-// covers (beyond it they keep the analytic surface's angle as the parameter, which the NURBS
-// form does not use), so the pcurve is made again: the edge's 3D points are projected onto the
-// unwrapped surface by Newton steps from `guess` (the converted pcurve: on its first turn the
-// answer, beyond it within a fraction of a turn), and a C2 cubic interpolates the projections,
-// refined until it reproduces the edge to 1e-9 of the model's size between its samples.
-Handle(Geom2d_BSplineCurve)
-    pcurveOnUnwrappedSurface(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
-                             const Handle(Geom2d_Curve) & guess, double first, double last);
-
-}  // namespace nurbslod::occ

@@ -29,10 +29,22 @@
 #include <optional>
 
 #include "occ/ClosedSurfaceUnwrapper.hpp"
+#include "occ/FaceSewing.hpp"
+#include "occ/PcurveFromEdgeCurve.hpp"
 
 namespace nurbslod::occ {
 
-namespace {}  // namespace
+namespace {
+
+// Sewing tolerance as a fraction of the bounding-box diagonal: copies of one edge in a file
+// written without topology coincide to rounding, far closer than this, while distinct edges of
+// a real part are farther apart.
+constexpr double kSewingTolerance = 1e-6;
+// The same fraction bounds how far a pcurve may stray from its edge before it is remade: a
+// hundredth of the finest tolerance (relative 1e-4) that the benchmarks ask for.
+constexpr double kPcurveAccuracy = 1e-6;
+
+}  // namespace
 
 BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & s) {
     std::vector<double> knotsU, knotsV;
@@ -178,8 +190,10 @@ std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
     return {low, high};
 }
 
+// pcurveAccuracy: a pcurve that strays farther than this from its edge's 3D curve is remade
+// from the 3D curve (see pcurveFromEdgeCurve).
 TrimmedSurface importFace(const TopoDS_Face& face, int index,
-                          const TopTools_IndexedMapOfShape& edges) {
+                          const TopTools_IndexedMapOfShape& edges, double pcurveAccuracy) {
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
@@ -203,18 +217,20 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     const auto [low, high] = pcurveBounds(result.loops);
     const Handle(Geom_BSplineSurface) unwrapped =
         unwrapClosedSurface(surface, low.x(), high.x(), low.y(), high.y());
-    if (unwrapped != surface) {
-        for (size_t l = 0; l < result.loops.size(); ++l)
-            for (size_t c = 0; c < result.loops[l].curves.size(); ++c) {
-                TrimCurve& curve = result.loops[l].curves[c];
-                double first = 0, last = 0;
-                const Handle(Geom2d_Curve) converted =
-                    BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
-                if (curve.degenerated) continue;  // a point in 3D: its (u, v) line stays
-                curve.pcurve = toCurve(pcurveOnUnwrappedSurface(
-                    curveEdges[l][c], unwrapped, converted, curve.first, curve.last));
-            }
-    }
+    for (size_t l = 0; l < result.loops.size(); ++l)
+        for (size_t c = 0; c < result.loops[l].curves.size(); ++c) {
+            TrimCurve& curve = result.loops[l].curves[c];
+            if (curve.degenerated) continue;  // a point in 3D: its (u, v) line stays
+            double first = 0, last = 0;
+            const Handle(Geom2d_Curve) pcurve =
+                BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
+            if (unwrapped == surface && pcurveDeviation(curveEdges[l][c], surface, pcurve,
+                                                        curve.first, curve.last) <= pcurveAccuracy)
+                continue;
+            const Handle(Geom2d_BSplineCurve) remade = pcurveFromEdgeCurve(
+                curveEdges[l][c], unwrapped, pcurve, curve.first, curve.last, pcurveAccuracy);
+            if (!remade.IsNull()) curve.pcurve = toCurve(remade);
+        }
     result.surface = toBSplineSurface(unwrapped);
     return result;
 }
@@ -225,21 +241,31 @@ Model importModel(const TopoDS_Shape& original) {
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
+    Bnd_Box box;
+    BRepBndLib::Add(original, box);
+    if (!box.IsVoid()) {
+        box.SetGap(0.0);
+        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
+    }
+
+    // Loose faces (no shared edges in the file) are sewn where their edges coincide to far
+    // below any tolerance a user asks for, so that the mesh closes across them.
+    const SewnShape sewn = sewFaces(original, kSewingTolerance * model.boundingBoxDiagonal);
 
     // Convert the whole shape at once so that the converted faces still share their converted
     // edges (and the edges' common parameter). If that fails, convert face by face.
     std::optional<BRepBuilderAPI_NurbsConvert> converter;
     TopoDS_Shape converted;
     try {
-        converter.emplace(original, Standard_False);
+        converter.emplace(sewn.shape, Standard_False);
         if (converter->IsDone()) converted = converter->Shape();
     } catch (const Standard_Failure&) {
         converted.Nullify();
     }
 
     TopTools_IndexedMapOfShape edges, vertices;
-    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_EDGE, edges);
-    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_VERTEX, vertices);
+    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_EDGE, edges);
+    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_VERTEX, vertices);
 
     model.faces.resize(originalFaces.Extent());
     for (int k = 1; k <= originalFaces.Extent(); ++k) {
@@ -247,15 +273,16 @@ Model importModel(const TopoDS_Shape& original) {
         try {
             TopoDS_Face face;
             if (!converted.IsNull()) {
-                face = TopoDS::Face(converter->ModifiedShape(originalFace));
+                face = TopoDS::Face(converter->ModifiedShape(sewn.faces[k - 1]));
             } else {
-                BRepBuilderAPI_NurbsConvert single(originalFace, Standard_False);
+                BRepBuilderAPI_NurbsConvert single(sewn.faces[k - 1], Standard_False);
                 face = TopoDS::Face(single.Shape());
             }
             // the converted face comes back FORWARD; the orientation (which side is outside)
             // is the original face's
             face.Orientation(originalFace.Orientation());
-            model.faces[k - 1] = importFace(face, k, edges);
+            model.faces[k - 1] =
+                importFace(face, k, edges, kPcurveAccuracy * model.boundingBoxDiagonal);
         } catch (const Standard_Failure& failure) {
             model.faces[k - 1].faceIndex = k;
             model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
@@ -283,12 +310,6 @@ Model importModel(const TopoDS_Shape& original) {
         e.degenerated = BRep_Tool::Degenerated(edge);
     }
 
-    Bnd_Box box;
-    BRepBndLib::Add(original, box);
-    if (!box.IsVoid()) {
-        box.SetGap(0.0);
-        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
-    }
     return model;
 }
 

@@ -1,14 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -191,6 +194,28 @@ TEST(Tessellation, ThreadOverTwoTurnsIsWithinTolerance) {
     EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover
                              << " tolerance " << result.tolerance;
     EXPECT_TRUE(report.facesMissing.empty());
+    // the pcurves of the neck, which the NURBS conversion approximates 0.19 off their edges
+    // (2 T), are remade from the edges: the two faces of each edge meet again
+    EXPECT_EQ(report.openEdges, 0u);
+}
+
+// A filleted box written as loose faces (each with its own copy of the edges, as IGES files often are)
+// is sewn on import and meshed closed (it once opened along every edge).
+TEST(Tessellation, LooseFacesAreSewnIntoAClosedMesh) {
+    TopoDS_Compound loose;
+    BRep_Builder builder;
+    builder.MakeCompound(loose);
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
+    BRepFilletAPI_MakeFillet fillet(box);
+    for (TopExp_Explorer it(box, TopAbs_EDGE); it.More(); it.Next())
+        fillet.Add(2.0, TopoDS::Edge(it.Current()));
+    for (TopExp_Explorer it(fillet.Shape(), TopAbs_FACE); it.More(); it.Next())
+        builder.Add(loose, BRepBuilderAPI_Copy(it.Current()).Shape());
+    const auto result = tessellate(loose, 1e-2, ErrorMode::Guaranteed);
+    ASSERT_TRUE(result.failures.empty());
+    const auto report = occ::verifyMesh(loose, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.pass);
+    EXPECT_EQ(report.openEdges, 0u);
 }
 
 // The triangles of some faces only, for measuring them alone.
@@ -225,9 +250,11 @@ TEST(Tessellation, SloppyCornersAndSliversAreCovered) {
     options.tolerance = 1e-4 * model.boundingBoxDiagonal;
     const auto fine = tessellateModel(model, options);
     EXPECT_TRUE(fine.failures.empty());
+    // face 184 has a pole: the verifier's seeded projection once put samples next to it on a
+    // false foot 10 T away (the global projection that meshjudge uses finds them on the face)
     const auto report =
-        occ::verifyMesh(shape, facesOf(fine.mesh, {204, 221, 288}), options.tolerance);
-    ASSERT_EQ(report.faces.size(), 3u);
+        occ::verifyMesh(shape, facesOf(fine.mesh, {184, 204, 221, 288}), options.tolerance);
+    ASSERT_EQ(report.faces.size(), 4u);
     for (const auto& face : report.faces) {
         EXPECT_LE(face.cover, options.tolerance) << "face " << face.face;
         EXPECT_LE(face.dev, options.tolerance) << "face " << face.face;
