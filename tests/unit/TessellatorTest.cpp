@@ -22,6 +22,7 @@
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
+#include "tessellate/CellErrorBound.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
@@ -120,6 +121,21 @@ TEST(BezierPatchGrid, ReproducesTheSurface) {
                 }
 }
 
+// The approximate error samples between the control points' parameters too: on the cubic
+// z = s (s - 1/2) (s - 1) the parameters 0, 1/3, 2/3, 1 alone see 0.037 of its 0.048 bulge.
+TEST(CellErrorBound, ApproximateErrorSeesBulgesBetweenControlPoints) {
+    BezierPatch patch(3, 1);
+    const double z[4] = {0, 1.0 / 6, -1.0 / 6, 0};
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 1; ++j) patch.pole(i, j) = HomogeneousPoint3(i / 3.0, j, z[i], 1);
+    const double bulge = std::sqrt(3.0) / 36;  // |z| at s = 1/2 -+ sqrt(3)/6
+    const CellErrorBound approximate = cellErrorBound(patch, ErrorMode::Approximate);
+    EXPECT_GT(approximate.interior, 0.95 * bulge);
+    EXPECT_LE(approximate.interior, bulge + 1e-12);
+    // the conservative bound stays above it
+    EXPECT_GE(cellErrorBound(patch, ErrorMode::Guaranteed).untrimmed(), bulge);
+}
+
 // A closed solid gives a closed mesh within the tolerance, in both modes.
 TEST(Tessellation, PrimitivesAreClosedAndWithinTolerance) {
     TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
@@ -199,8 +215,8 @@ TEST(Tessellation, ThreadOverTwoTurnsIsWithinTolerance) {
     EXPECT_EQ(report.openEdges, 0u);
 }
 
-// A filleted box written as loose faces (each with its own copy of the edges, as IGES files often are)
-// is sewn on import and meshed closed (it once opened along every edge).
+// A filleted box written as loose faces (each with its own copy of the edges, as IGES files often
+// are) is sewn on import and meshed closed (it once opened along every edge).
 TEST(Tessellation, LooseFacesAreSewnIntoAClosedMesh) {
     TopoDS_Compound loose;
     BRep_Builder builder;
