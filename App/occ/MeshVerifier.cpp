@@ -17,6 +17,7 @@
 #include <BVH_Tools.hxx>
 #include <BVH_Triangulation.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_Surface.hxx>
 #include <Poly_Triangulation.hxx>
@@ -350,7 +351,7 @@ public:
     };
 
     explicit SurfaceProjector(const Handle(Geom_Surface) & surface)
-        : adaptor_(surface), fallback_(new ShapeAnalysis_Surface(surface)) {
+        : surface_(surface), adaptor_(surface), fallback_(new ShapeAnalysis_Surface(surface)) {
         uFirst_ = adaptor_.FirstUParameter();
         uLast_ = adaptor_.LastUParameter();
         vFirst_ = adaptor_.FirstVParameter();
@@ -405,7 +406,25 @@ public:
         return {foot, p.Distance(adaptor_.Value(foot.X(), foot.Y()))};
     }
 
+    // The global projection meshjudge uses (FreeCAD's Surface.parameter): all extrema of the
+    // distance. Slow; for the samples whose seeded projection ends far from the surface, which
+    // near a pole can be a false foot on the collapsed row.
+    std::optional<Foot> projectGlobally(const gp_Pnt& p) {
+        if (!global_) {
+            // set up once per surface: the extrema sample the whole surface first
+            global_ = std::make_unique<GeomAPI_ProjectPointOnSurf>();
+            global_->Init(surface_, uFirst_, uLast_, vFirst_, vLast_);
+        }
+        global_->Perform(p);
+        if (!global_->IsDone() || global_->NbPoints() == 0) return std::nullopt;
+        double u = 0, v = 0;
+        global_->LowerDistanceParameters(u, v);
+        return Foot{gp_Pnt2d(u, v), global_->LowerDistance()};
+    }
+
 private:
+    Handle(Geom_Surface) surface_;
+    std::unique_ptr<GeomAPI_ProjectPointOnSurf> global_;
     GeomAdaptor_Surface adaptor_;
     Handle(ShapeAnalysis_Surface) fallback_;
     double uFirst_ = 0, uLast_ = 0, vFirst_ = 0, vLast_ = 0;
@@ -576,6 +595,10 @@ private:
             } else {
                 foot = projector.project(p, precision);
             }
+            if (foot.distance > exactCheckFraction * tolerance_)
+                if (const auto global = projector.projectGlobally(p);
+                    global && global->distance < foot.distance)
+                    foot = *global;
             sample.surfaceDistance = foot.distance;
             sample.foot = foot.parameters;
             sample.projected = true;

@@ -25,11 +25,26 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
 #include <cmath>
+#include <limits>
 #include <optional>
+
+#include "occ/ClosedSurfaceUnwrapper.hpp"
+#include "occ/FaceSewing.hpp"
+#include "occ/PcurveFromEdgeCurve.hpp"
 
 namespace nurbslod::occ {
 
-namespace {}  // namespace
+namespace {
+
+// Sewing tolerance as a fraction of the bounding-box diagonal: copies of one edge in a file
+// written without topology coincide to rounding, far closer than this, while distinct edges of
+// a real part are farther apart.
+constexpr double kSewingTolerance = 1e-6;
+// The same fraction bounds how far a pcurve may stray from its edge before it is remade: a
+// hundredth of the finest tolerance (relative 1e-4) that the benchmarks ask for.
+constexpr double kPcurveAccuracy = 1e-6;
+
+}  // namespace
 
 BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & s) {
     std::vector<double> knotsU, knotsV;
@@ -122,7 +137,7 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
 namespace {
 
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                    const TopTools_IndexedMapOfShape& edges) {
+                    const TopTools_IndexedMapOfShape& edges, std::vector<TopoDS_Edge>& curveEdges) {
     TrimLoop loop;
     std::vector<TopoDS_Edge> ordered;
     for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
@@ -150,24 +165,73 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
         curve.seam = BRep_Tool::IsClosed(edge, face);
         curve.degenerated = BRep_Tool::Degenerated(edge);
         loop.curves.push_back(std::move(curve));
+        curveEdges.push_back(edge);
     }
     return loop;
 }
 
+// A box around the loops' pcurves over their edge ranges: the control points whose basis
+// functions reach into [first, last] (convex hull property, weights > 0).
+std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
+    Point2 low = Point2::Constant(std::numeric_limits<double>::max()), high = -low;
+    for (const auto& loop : loops)
+        for (const auto& curve : loop.curves) {
+            const auto& knots = curve.pcurve.knots();
+            const auto& poles = curve.pcurve.poles();
+            if (curve.pcurve.problem()) continue;
+            const int from = knots.findSpan(curve.first) - knots.degree();
+            const int to = knots.findSpan(curve.last);
+            for (int i = std::max(0, from); i <= to && i < static_cast<int>(poles.size()); ++i) {
+                const Point2 p = poles[i].head<2>() / poles[i][2];
+                low = low.cwiseMin(p);
+                high = high.cwiseMax(p);
+            }
+        }
+    return {low, high};
+}
+
+// pcurveAccuracy: a pcurve that strays farther than this from its edge's 3D curve is remade
+// from the 3D curve (see pcurveFromEdgeCurve).
 TrimmedSurface importFace(const TopoDS_Face& face, int index,
-                          const TopTools_IndexedMapOfShape& edges) {
+                          const TopTools_IndexedMapOfShape& edges, double pcurveAccuracy) {
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
-    result.surface = toBSplineSurface(faceSurfaceAsBSpline(face));
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    std::vector<std::vector<TopoDS_Edge>> curveEdges;
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
         const TopoDS_Wire wire = TopoDS::Wire(it.Current());
-        TrimLoop loop = importLoop(wire, face, edges);
+        std::vector<TopoDS_Edge> loopEdges;
+        TrimLoop loop = importLoop(wire, face, edges, loopEdges);
         loop.outer = wire.IsSame(outer);
-        if (!loop.curves.empty()) result.loops.push_back(std::move(loop));
+        if (!loop.curves.empty()) {
+            result.loops.push_back(std::move(loop));
+            curveEdges.push_back(std::move(loopEdges));
+        }
     }
     if (result.loops.empty()) throw Standard_Failure("the face has no trimming loop");
+    // The pcurves may wind over more than the one turn a closed surface's NURBS form covers
+    // (a thread on a cylinder): the surface is unwrapped to cover them, and the pcurves are
+    // carried onto it.
+    const Handle(Geom_BSplineSurface) surface = faceSurfaceAsBSpline(face);
+    const auto [low, high] = pcurveBounds(result.loops);
+    const Handle(Geom_BSplineSurface) unwrapped =
+        unwrapClosedSurface(surface, low.x(), high.x(), low.y(), high.y());
+    for (size_t l = 0; l < result.loops.size(); ++l)
+        for (size_t c = 0; c < result.loops[l].curves.size(); ++c) {
+            TrimCurve& curve = result.loops[l].curves[c];
+            if (curve.degenerated) continue;  // a point in 3D: its (u, v) line stays
+            double first = 0, last = 0;
+            const Handle(Geom2d_Curve) pcurve =
+                BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
+            if (unwrapped == surface && pcurveDeviation(curveEdges[l][c], surface, pcurve,
+                                                        curve.first, curve.last) <= pcurveAccuracy)
+                continue;
+            const Handle(Geom2d_BSplineCurve) remade = pcurveFromEdgeCurve(
+                curveEdges[l][c], unwrapped, pcurve, curve.first, curve.last, pcurveAccuracy);
+            if (!remade.IsNull()) curve.pcurve = toCurve(remade);
+        }
+    result.surface = toBSplineSurface(unwrapped);
     return result;
 }
 
@@ -177,21 +241,31 @@ Model importModel(const TopoDS_Shape& original) {
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
+    Bnd_Box box;
+    BRepBndLib::Add(original, box);
+    if (!box.IsVoid()) {
+        box.SetGap(0.0);
+        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
+    }
+
+    // Loose faces (no shared edges in the file) are sewn where their edges coincide to far
+    // below any tolerance a user asks for, so that the mesh closes across them.
+    const SewnShape sewn = sewFaces(original, kSewingTolerance * model.boundingBoxDiagonal);
 
     // Convert the whole shape at once so that the converted faces still share their converted
     // edges (and the edges' common parameter). If that fails, convert face by face.
     std::optional<BRepBuilderAPI_NurbsConvert> converter;
     TopoDS_Shape converted;
     try {
-        converter.emplace(original, Standard_False);
+        converter.emplace(sewn.shape, Standard_False);
         if (converter->IsDone()) converted = converter->Shape();
     } catch (const Standard_Failure&) {
         converted.Nullify();
     }
 
     TopTools_IndexedMapOfShape edges, vertices;
-    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_EDGE, edges);
-    TopExp::MapShapes(converted.IsNull() ? original : converted, TopAbs_VERTEX, vertices);
+    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_EDGE, edges);
+    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_VERTEX, vertices);
 
     model.faces.resize(originalFaces.Extent());
     for (int k = 1; k <= originalFaces.Extent(); ++k) {
@@ -199,15 +273,16 @@ Model importModel(const TopoDS_Shape& original) {
         try {
             TopoDS_Face face;
             if (!converted.IsNull()) {
-                face = TopoDS::Face(converter->ModifiedShape(originalFace));
+                face = TopoDS::Face(converter->ModifiedShape(sewn.faces[k - 1]));
             } else {
-                BRepBuilderAPI_NurbsConvert single(originalFace, Standard_False);
+                BRepBuilderAPI_NurbsConvert single(sewn.faces[k - 1], Standard_False);
                 face = TopoDS::Face(single.Shape());
             }
             // the converted face comes back FORWARD; the orientation (which side is outside)
             // is the original face's
             face.Orientation(originalFace.Orientation());
-            model.faces[k - 1] = importFace(face, k, edges);
+            model.faces[k - 1] =
+                importFace(face, k, edges, kPcurveAccuracy * model.boundingBoxDiagonal);
         } catch (const Standard_Failure& failure) {
             model.faces[k - 1].faceIndex = k;
             model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
@@ -235,12 +310,6 @@ Model importModel(const TopoDS_Shape& original) {
         e.degenerated = BRep_Tool::Degenerated(edge);
     }
 
-    Bnd_Box box;
-    BRepBndLib::Add(original, box);
-    if (!box.IsVoid()) {
-        box.SetGap(0.0);
-        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
-    }
     return model;
 }
 

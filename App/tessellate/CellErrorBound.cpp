@@ -58,7 +58,18 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode) {
         }
 
     if (mode == ErrorMode::Approximate) {
-        bound.interior = farthest;
+        // The paper's measure samples the surface at the control points' parameters only,
+        // and misses bulges between them (measured up to 1.2 T on the corpus); the midpoints
+        // between those parameters are sampled too, at about 4x the cost of this estimate.
+        double between = 0;
+        for (int i = 0; i <= 2 * m; ++i)
+            for (int j = 0; j <= 2 * n; ++j) {
+                if (i % 2 == 0 && j % 2 == 0) continue;  // a control point's parameter: done
+                const double s = static_cast<double>(i) / (2 * m);
+                const double t = static_cast<double>(j) / (2 * n);
+                between = std::max(between, (patch.point(s, t) - bilinear(s, t)).norm());
+            }
+        bound.interior = std::max(farthest, between);
         bound.boundary = 0;  // the approximate measure samples the edges with the interior
     } else {
         // interior: coefficients of N - w B in the degree (m+1, n+1) basis, B bilinear

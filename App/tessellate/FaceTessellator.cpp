@@ -184,7 +184,7 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
     const double scaleOfDomain =
         std::max({std::abs(u0), std::abs(u1), std::abs(v0), std::abs(v1), 1e-300});
     if (!(u1 - u0 > 1e-12 * scaleOfDomain) || !(v1 - v0 > 1e-12 * scaleOfDomain))
-        throw std::runtime_error("the trimming loops enclose no area (degenerate face)");
+        throw FaceWithoutArea("the trimming loops enclose no area (degenerate face)");
     frame_ = std::make_unique<Frame>();
     frame_->u0 = u0;
     frame_->v0 = v0;
@@ -546,7 +546,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     const Paths region = regionOf(loops);
     double area = 0;
     for (const auto& p : region) area += ClipperLib::Area(p);
-    if (!(std::abs(area) > 0)) throw std::runtime_error("the trimming loops enclose no area");
+    if (!(std::abs(area) > 0)) throw FaceWithoutArea("the trimming loops enclose no area");
     buildKdTree(region);
 
     std::vector<Rect> cells;

@@ -3,6 +3,7 @@
 #include <functional>
 #include <memory>
 #include <polyclipping/clipper.hpp>
+#include <stdexcept>
 #include <vector>
 
 #include "geometry/BezierPatchGrid.hpp"
@@ -12,6 +13,11 @@
 #include "trim/TrimmedSurface.hpp"
 
 namespace nurbslod {
+
+// Thrown when a face's trimming loops enclose no area that the integer grid can resolve.
+struct FaceWithoutArea : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 // Tessellates one trimmed face (paper sections 5.2 to 8): a kd-tree over the bounding box of
 // the trimming polygon, each leaf cut by the trimmed region and triangulated.

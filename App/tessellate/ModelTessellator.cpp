@@ -13,8 +13,10 @@
 #include <string>
 #include <unordered_map>
 
+#include "tessellate/BoundaryFan.hpp"
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceTessellator.hpp"
+#include "tessellate/SurfaceProjection.hpp"
 #include "trim/EdgeDiscretizer.hpp"
 
 namespace nurbslod {
@@ -142,6 +144,35 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             (start - first).norm() + (end - last).norm())
             std::swap(endVertices[e].first, endVertices[e].second);
     }
+    // A sloppy file may stop a trimming curve short of its B-rep vertex (by up to the vertex's
+    // tolerance), while the exact face reaches the vertex: each curve end then moves to the
+    // vertex's foot on the face's surface, so that the face covers its corner and the faces
+    // that meet there end at nearly the same point.
+    std::vector<std::vector<std::array<Point3, 2>>> endPoints(model.edges.size());
+    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+        if (uses[e].empty()) return;
+        auto& poly = polylines[e];
+        const auto [firstVertex, lastVertex] = endVertices[e];
+        endPoints[e].resize(uses[e].size());
+        for (size_t k = 0; k < uses[e].size(); ++k) {
+            const BSplineSurface& surface = model.faces[uses[e][k].face].surface;
+            for (int end = 0; end < 2; ++end) {
+                const int vertex = end == 0 ? firstVertex : lastVertex;
+                Point2& uv = end == 0 ? poly.uv[k].front() : poly.uv[k].back();
+                Point3& point = endPoints[e][k][end];
+                point = surface.point(uv.x(), uv.y());
+                if (vertex < 0) continue;
+                const ModelVertex& brepVertex = model.vertices[vertex];
+                const double gap = (point - brepVertex.point).norm();
+                if (!(gap > 1e-3 * options.tolerance) || gap > 2 * brepVertex.tolerance) continue;
+                const SurfaceFoot foot = projectOntoSurface(surface, brepVertex.point, uv);
+                if ((foot.point - brepVertex.point).norm() < gap) {
+                    uv = foot.uv;
+                    point = foot.point;
+                }
+            }
+        }
+    });
     std::vector<Point3> positions;
     std::map<std::pair<int, int>, std::uint32_t> vertexOfBrepVertex;  // (vertex, face or -1)
     {
@@ -151,11 +182,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             if (uses[e].empty()) continue;
             const auto [firstVertex, lastVertex] = endVertices[e];
             for (size_t k = 0; k < uses[e].size(); ++k) {
-                const auto curve = curveOnSurface(uses[e][k]);
                 if (firstVertex >= 0)
-                    endpoints[firstVertex].push_back({uses[e][k].face, curve.point(0.0)});
+                    endpoints[firstVertex].push_back({uses[e][k].face, endPoints[e][k][0]});
                 if (lastVertex >= 0)
-                    endpoints[lastVertex].push_back({uses[e][k].face, curve.point(1.0)});
+                    endpoints[lastVertex].push_back({uses[e][k].face, endPoints[e][k][1]});
             }
         }
         for (auto& [vertex, list] : endpoints) {
@@ -223,7 +253,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         exactPoints;
 
     // a face's boundary polygons from the shared polylines
-    auto boundaryOf = [&](int f) {
+    // (the fan of a thin face also takes loops of two points: two curves between two vertices)
+    auto boundaryOf = [&](int f, std::size_t minimumPoints = 3) {
         std::vector<BoundaryLoop> loops;
         const auto& face = model.faces[f];
         for (int l = 0; l < int(face.loops.size()); ++l) {
@@ -282,7 +313,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 loop.points.pop_back();
                 loop.origins.pop_back();
             }
-            if (loop.points.size() >= 3) loops.push_back(std::move(loop));
+            if (loop.points.size() >= minimumPoints) loops.push_back(std::move(loop));
         }
         return loops;
     };
@@ -290,6 +321,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // 3. first pass over faces: kd-trees and the cuts of cell sides with the boundary
     std::vector<std::unique_ptr<FaceTessellator>> tessellators(faceCount);
     std::vector<std::vector<BoundaryCrossing>> crossings(faceCount);
+    std::vector<char> thinFace(faceCount, 0);  // loops without area: fanned in the second pass
     std::atomic<std::size_t> done{0};
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
@@ -297,6 +329,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             tessellators[f] =
                 std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
+        } catch (const FaceWithoutArea&) {
+            thinFace[f] = 1;
+            tessellators[f].reset();
         } catch (const std::exception& e) {
             failure[f] = e.what();
             tessellators[f].reset();
@@ -349,12 +384,18 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (tessellators[f]) {
             try {
                 faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions);
-                if (faceMeshes[f].triangles.empty())
-                    failure[f] = "no triangles inside the trimming loops";
             } catch (const std::exception& e) {
                 failure[f] = e.what();
             }
             tessellators[f].reset();
+        }
+        // A face too thin for any cell to find area inside its loops is still meshed: a fan
+        // over its boundary (a face must never be missing).
+        if (thinFace[f] || (failure[f].empty() && faceMeshes[f].triangles.empty())) {
+            faceMeshes[f] = fanOverBoundary(model.faces[f], boundaryOf(f, 2), positions);
+            failure[f].clear();
+            if (faceMeshes[f].triangles.empty())
+                failure[f] = "no triangles inside the trimming loops";
         }
         const std::size_t n = ++done;
         if (options.progress) options.progress(n, static_cast<std::size_t>(faceCount));

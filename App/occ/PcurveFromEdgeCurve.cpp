@@ -1,0 +1,125 @@
+#include "occ/PcurveFromEdgeCurve.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <Geom2dAPI_Interpolate.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_HArray1OfPnt2d.hxx>
+#include <algorithm>
+#include <cmath>
+
+namespace nurbslod::occ {
+
+namespace {
+
+// A point where one derivative is this much shorter than the other is taken as on a pole.
+constexpr double kPoleRatio = 1e-4;
+// How far (as a fraction of the surface's domain) a projection may move a pcurve point.
+constexpr double kLargestSlide = 0.25;
+
+// The (u, v) of the surface point nearest to `point`, by Gauss-Newton steps from `start`.
+gp_Pnt2d projectNear(const Handle(Geom_BSplineSurface) & surface, const gp_Pnt& point,
+                     gp_Pnt2d start) {
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    double u = start.X(), v = start.Y();
+    for (int iteration = 0; iteration < 50; ++iteration) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        surface->D1(u, v, p, du, dv);
+        const gp_Vec r(p, point);
+        const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
+        const double ru = du.Dot(r), rv = dv.Dot(r);
+        const double det = a * c - b * b;
+        if (!(std::abs(det) > 1e-300)) break;
+        const double stepU = (c * ru - b * rv) / det, stepV = (a * rv - b * ru) / det;
+        if (!std::isfinite(stepU) || !std::isfinite(stepV)) break;
+        const double nextU = std::clamp(u + stepU, u0, u1), nextV = std::clamp(v + stepV, v0, v1);
+        const bool converged =
+            std::abs(nextU - u) + std::abs(nextV - v) < 1e-15 * (1 + std::abs(u) + std::abs(v));
+        u = nextU;
+        v = nextV;
+        if (converged) break;
+    }
+    return {u, v};
+}
+
+}  // namespace
+
+double pcurveDeviation(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
+                       const Handle(Geom2d_Curve) & pcurve, double first, double last) {
+    const BRepAdaptor_Curve curve(edge);
+    constexpr int samples = 16;
+    double worst = 0;
+    for (int k = 0; k <= samples; ++k) {
+        const double t = first + (last - first) * k / samples;
+        const gp_Pnt2d uv = pcurve->Value(t);
+        worst = std::max(worst, surface->Value(uv.X(), uv.Y()).Distance(curve.Value(t)));
+    }
+    return worst;
+}
+
+Handle(Geom2d_BSplineCurve)
+    pcurveFromEdgeCurve(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
+                        const Handle(Geom2d_Curve) & guess, double first, double last,
+                        double accuracy) {
+    const BRepAdaptor_Curve curve(edge);
+    // A projection far from the guess in (u, v) is no correction but a slide along a pole or a
+    // jump to another sheet: the pcurve is then kept as it was (nothing is returned).
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    const double reachU = kLargestSlide * (u1 - u0), reachV = kLargestSlide * (v1 - v0);
+    bool slid = false;
+    auto sampleAt = [&](double t) {
+        const gp_Pnt2d start = guess->Value(t);
+        const gp_Pnt point = curve.Value(t);
+        // At a pole (a row of poles collapsed to a point) a projection would slide freely along
+        // the row: the guess stays there.
+        gp_Pnt onSurface;
+        gp_Vec du, dv;
+        surface->D1(start.X(), start.Y(), onSurface, du, dv);
+        const double shorter = std::min(du.Magnitude(), dv.Magnitude());
+        const double longer = std::max(du.Magnitude(), dv.Magnitude());
+        if (!(shorter > kPoleRatio * longer)) return start;
+        const gp_Pnt2d foot = projectNear(surface, point, start);
+        if (!(std::abs(foot.X() - start.X()) <= reachU && std::abs(foot.Y() - start.Y()) <= reachV))
+            slid = true;
+        return foot;
+    };
+    constexpr int kMostSamples = 1024;
+    for (int samples = 32; samples <= kMostSamples; samples *= 2) {
+        Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, samples + 1);
+        Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, samples + 1);
+        for (int k = 0; k <= samples; ++k) {
+            const double t = first + (last - first) * k / samples;
+            parameters->SetValue(k + 1, t);
+            points->SetValue(k + 1, sampleAt(t));
+        }
+        if (slid) return {};
+        Handle(Geom2d_BSplineCurve) result;
+        try {
+            Geom2dAPI_Interpolate interpolate(points, parameters, Standard_False, 1e-15);
+            interpolate.Perform();
+            if (!interpolate.IsDone()) return {};
+            result = interpolate.Curve();
+        } catch (const Standard_Failure&) {
+            return {};  // samples that coincide (a curve that stands still): keep the guess
+        }
+        // the interpolant against the projections between its samples
+        double worst = 0;
+        for (int k = 0; k < samples; ++k) {
+            const double t = first + (last - first) * (k + 0.5) / samples;
+            const gp_Pnt2d fitted = result->Value(t), projected = sampleAt(t);
+            worst = std::max(worst, surface->Value(fitted.X(), fitted.Y())
+                                        .Distance(surface->Value(projected.X(), projected.Y())));
+        }
+        // a hundredth of the accuracy asked for is far below any tolerance; a curve that does
+        // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself
+        if (worst <= 0.01 * accuracy) return result;
+        if (samples == kMostSamples)
+            return worst <= accuracy ? result : Handle(Geom2d_BSplineCurve)();
+    }
+    return {};
+}
+
+}  // namespace nurbslod::occ

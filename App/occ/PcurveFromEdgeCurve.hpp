@@ -1,0 +1,32 @@
+#pragma once
+
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Edge.hxx>
+
+namespace nurbslod::occ {
+
+// How far the pcurve, mapped onto the surface, strays from the edge's 3D curve at the same
+// edge parameter (the largest of a few samples over [first, last]).
+double pcurveDeviation(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
+                       const Handle(Geom2d_Curve) & pcurve, double first, double last);
+
+// The edge's curve on a surface remade from its 3D curve, over the edge parameter range
+// [first, last]: each 3D point is projected onto the surface by Newton steps from `guess` (the
+// pcurve the file or the NURBS conversion gave, which keeps the right side of a seam; at a pole
+// the guess stays), and a C2 cubic interpolates the projections, refined until it reproduces
+// them to a hundredth of `accuracy` between its samples. Null where a projection slides far
+// from the guess in (u, v) (onto another sheet) or the samples cannot be
+// interpolated: the guess is then the better pcurve. Used where that pcurve is not good enough:
+//  - BRepBuilderAPI_NurbsConvert approximates the pcurves of analytic faces, and may stray by
+//    far more than the tolerance asked for (0.19 on bottle.brep's neck), or leave them in the
+//    analytic angle beyond the one turn its surface covers;
+//  - a sloppy file's pcurves of one edge disagree by its tolerance: following the 3D curve, the
+//    faces of the edge meet again, where the file's exact face (its 3D edge) is.
+Handle(Geom2d_BSplineCurve)
+    pcurveFromEdgeCurve(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
+                        const Handle(Geom2d_Curve) & guess, double first, double last,
+                        double accuracy);
+
+}  // namespace nurbslod::occ
