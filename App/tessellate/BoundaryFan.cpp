@@ -18,6 +18,7 @@ FaceMesh fan(const TrimmedSurface& face, const std::vector<BoundaryLoop>& loops,
             v.shared = true;
             v.sharedId = p.vertex;
             v.position = sharedPositions[p.vertex];
+            v.uv = p.uv;
             const Vector3 normal = face.surface.normal(p.uv.x(), p.uv.y());
             v.normal = face.reversed ? Vector3(-normal) : normal;
             mesh.vertices.push_back(v);
@@ -28,6 +29,7 @@ FaceMesh fan(const TrimmedSurface& face, const std::vector<BoundaryLoop>& loops,
     auto ownVertexAt = [&](const Point2& uv) {
         FaceMesh::Vertex v;
         v.position = face.surface.point(uv.x(), uv.y());
+        v.uv = uv;
         const Vector3 normal = face.surface.normal(uv.x(), uv.y());
         v.normal = face.reversed ? Vector3(-normal) : normal;
         mesh.vertices.push_back(v);
