@@ -31,6 +31,7 @@
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
 #include "tessellate/ModelTessellator.hpp"
+#include "tessellate/ToleranceRequest.hpp"
 
 namespace {
 
@@ -135,13 +136,17 @@ double boundingBoxDiagonal(const TopoDS_Shape& shape) {
 
 double absoluteTolerance(const ToleranceArguments& arguments, double diagonal,
                          double defaultRelative) {
-    if (!arguments.absolute.empty()) return positiveNumber(arguments.absolute, "--tolerance");
-    const double relative = arguments.relative.empty()
-                                ? defaultRelative
-                                : positiveNumber(arguments.relative, "--relative");
-    if (!(diagonal > 0) || !std::isfinite(diagonal))
-        throw BadInput("the model has no extent, so --relative cannot be used; give --tolerance");
-    return relative * diagonal;
+    ToleranceRequest request;
+    if (!arguments.absolute.empty())
+        request.absolute = positiveNumber(arguments.absolute, "--tolerance");
+    if (!arguments.relative.empty())
+        request.relative = positiveNumber(arguments.relative, "--relative");
+    try {
+        return resolveTolerance(request, diagonal, defaultRelative,
+                                {.absolute = "--tolerance", .relative = "--relative"});
+    } catch (const std::invalid_argument& error) {
+        throw BadInput(error.what());
+    }
 }
 
 void addToleranceOptions(CLI::App* command, ToleranceArguments& arguments,
@@ -212,7 +217,8 @@ int runTessellate(const TessellateArguments& arguments) {
     const Model model = occ::importModel(shape);
 
     TessellationOptions options;
-    options.tolerance = absoluteTolerance(arguments.tolerance, model.boundingBoxDiagonal, 1e-3);
+    options.tolerance =
+        absoluteTolerance(arguments.tolerance, model.boundingBoxDiagonal, defaultRelativeTolerance);
     options.mode = arguments.mode == "approximate" ? ErrorMode::Approximate : ErrorMode::Guaranteed;
     options.threads = arguments.threads;
     auto progress = std::make_shared<ProgressPrinter>();

@@ -27,27 +27,18 @@
 #include "occ/ShapeReader.hpp"
 #include "tessellate/AnalysisMesh.hpp"
 #include "tessellate/ModelTessellator.hpp"
+#include "tessellate/ToleranceRequest.hpp"
 
 namespace py = pybind11;
 
 namespace nurbslod::python {
 namespace {
 
-// Used when the caller gives neither an absolute nor a relative tolerance; the command line's
-// default too, so both give the same mesh for the same model.
-constexpr double defaultRelativeTolerance = 1e-3;
-
 // Where the model comes from. Read while the GIL is held (a FreeCAD shape is a Python
 // object); turned into a TopoDS_Shape after the GIL is released.
 struct ShapeSource {
     bool isPath = false;
     std::string text;  // the file path, or the BREP text of a FreeCAD shape
-};
-
-// The caller's tolerance, validated before any work so a typo fails at once.
-struct ToleranceRequest {
-    std::optional<double> absolute;
-    std::optional<double> relative;
 };
 
 std::string typeName(const py::handle& object) {
@@ -72,26 +63,16 @@ ShapeSource shapeSource(const py::object& shape) {
                          typeName(shape));
 }
 
-void requirePositiveFinite(const std::optional<double>& value, const char* name) {
-    if (value && !(std::isfinite(*value) && *value > 0)) {
-        throw py::value_error(std::string("NurbsLOD: ") + name +
-                              " must be a positive finite number, got " +
-                              py::repr(py::float_(*value)).cast<std::string>());
-    }
-}
-
+// The caller's tolerance, checked before any work so that a typo fails at once (pybind11
+// turns std::invalid_argument into ValueError).
 ToleranceRequest toleranceRequest(std::optional<double> tolerance, std::optional<double> relative) {
-    if (tolerance && relative) {
-        throw py::value_error(
-            "NurbsLOD: give either tolerance (absolute, model units) or relative (fraction of "
-            "the bounding box diagonal), not both");
+    const ToleranceRequest request{tolerance, relative};
+    try {
+        checkToleranceRequest(request);
+    } catch (const std::invalid_argument& error) {
+        throw py::value_error(std::string("NurbsLOD: ") + error.what());
     }
-    requirePositiveFinite(tolerance, "tolerance");
-    requirePositiveFinite(relative, "relative");
-    if (!tolerance && !relative) {
-        relative = defaultRelativeTolerance;
-    }
-    return {tolerance, relative};
+    return request;
 }
 
 ErrorMode errorMode(const std::string& mode) {
@@ -129,16 +110,11 @@ Model importSource(const ShapeSource& source) {
 }
 
 double absoluteTolerance(const Model& model, const ToleranceRequest& request) {
-    if (request.absolute) {
-        return *request.absolute;
+    try {
+        return resolveTolerance(request, model.boundingBoxDiagonal);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(std::string("NurbsLOD: ") + error.what());
     }
-    const double tolerance = *request.relative * model.boundingBoxDiagonal;
-    if (!(std::isfinite(tolerance) && tolerance > 0)) {
-        throw std::invalid_argument(
-            "NurbsLOD: the shape has an empty bounding box, so a relative tolerance means "
-            "nothing; give an absolute tolerance");
-    }
-    return tolerance;
 }
 
 // Runs without the GIL: reading, importing and tessellating are pure C++.
