@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "FaceLodCache.hpp"
+#include "lod/FaceLodCache.hpp"
 
 class SoTimerSensor;
 class SoSensor;

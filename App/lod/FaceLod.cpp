@@ -1,4 +1,4 @@
-#include "FaceLod.hpp"
+#include "lod/FaceLod.hpp"
 
 #include <Standard_Failure.hxx>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "FaceLodCache.hpp"
+#include "lod/FaceLodCache.hpp"
 
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>

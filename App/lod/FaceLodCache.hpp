@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "FaceLod.hpp"
+#include "lod/FaceLod.hpp"
 #include "tessellate/Model.hpp"
 
 namespace nurbslod::gui {
