@@ -425,11 +425,13 @@ def _display_of(obj):
 
 
 def stats(obj):
-    """What obj's last frame drew: triangles, max_screen_error_px, max_normal_error_deg (measured
-    on the drawn triangles: the largest angle between a facet normal and the exact normals at
-    its corners), faces_shading_limited (faces the normal bound made finer),
-    last_frame_tessellation_ms, faces_visible, faces_culled, faces_failed, faces_waiting (drawn coarser than wanted while
-    a worker makes the finer level), pending_jobs, background_tessellation_ms, frames."""
+    """What obj's last frame drew: triangles, max_screen_error_px, max_normal_error_deg
+    (measured on the drawn triangles: the largest angle between a facet normal and the exact
+    normals at its corners), max_normal_error_interior_deg (the same away from the trimming
+    loops and edge chords), faces_shading_limited (faces the normal bound made finer),
+    normal_error_deg (the bound), last_frame_tessellation_ms, faces_visible, faces_culled,
+    faces_failed, faces_waiting (drawn coarser than wanted while a worker makes the finer
+    level), pending_jobs, background_tessellation_ms, frames."""
     _, NurbsLODCoin = _coin()
     return NurbsLODCoin.stats(_display_of(obj).node)
 
