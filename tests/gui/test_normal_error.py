@@ -42,7 +42,7 @@ class NormalErrorBound(unittest.TestCase):
         gt.screenshot(self.view, name)
         FreeCAD.Console.PrintMessage(
             "NurbsLOD GUI test normal error {}: {} triangles, measured max normal error "
-            "{:.3f} deg ({:.3f} deg with corners on the surface), {} faces made finer by the "
+            "{:.3f} deg ({:.3f} deg over interior triangles), {} faces made finer by the "
             "bound, {} over it, {:.3f} px, {} frames, {:.0f} ms in workers\n".format(
                 normal_error_deg, stats["triangles"], stats["max_normal_error_deg"],
                 stats["max_normal_error_interior_deg"],
