@@ -22,6 +22,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <numbers>
 
 SO_NODE_SOURCE(SoNurbsLODShape);
 
@@ -56,6 +57,7 @@ SoNurbsLODShape::SoNurbsLODShape() {
     SO_NODE_CONSTRUCTOR(SoNurbsLODShape);
     SO_NODE_ADD_FIELD(pixelError, (0.5f));
     SO_NODE_ADD_FIELD(frameBudget, (20.0f));
+    SO_NODE_ADD_FIELD(normalError, (1.0f));
     SO_NODE_ADD_FIELD(hiddenFaces, (0));
     hiddenFaces.setNum(0);
     redrawSensor_ = new SoTimerSensor(&SoNurbsLODShape::redrawCheck, this);
@@ -144,6 +146,9 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     const nurbslod::gui::ViewPixelSize pixelSizeAt(state);
     const double allowedPixels =
         pixelError.getValue() > 0 ? static_cast<double>(pixelError.getValue()) : 0.5;
+    const double normalDegrees = normalError.getValue();
+    const double normalRadians =
+        normalDegrees > 0 && normalDegrees < 90 ? normalDegrees * std::numbers::pi / 180.0 : 0.0;
 
     cache_->collectFinished();
     const int faceCount = cache_->faceCount();
@@ -154,6 +159,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     }
     // Size of one pixel at each visible face, model units (or -1 for a culled face).
     std::vector<double> pixelSize(static_cast<std::size_t>(faceCount), -1);
+    std::vector<int> wantedLevel(static_cast<std::size_t>(faceCount), 0);
     struct Request {
         double priority;
         int face, level;
@@ -175,12 +181,23 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             continue;
         }
         pixelSize[static_cast<std::size_t>(f)] = pixel;
-        const double desired = allowedPixels * pixel;
-        const int wanted = cache_->levelFor(desired);
+        // Both bounds hold at the finer of the two levels: the screen-space error (section
+        // 4.1 of out-of-core-lod) and the face's shading tolerance (appearance, 4.1).
+        const double screen = allowedPixels * pixel;
+        const double shading = cache_->shadingTolerance(f, normalRadians);
+        // (Refining further where a drawn level measures more than the bound does not help:
+        // what exceeds it are triangles next to poles and trimming loops, whose vertices sit
+        // on edge chords off the surface, and the kd-tree's thin fans, at every level.)
+        const int screenLevel = cache_->levelFor(screen);
+        const int shadingLevel = std::isfinite(shading) ? cache_->levelFor(shading) : 0;
+        const int wanted = std::max(screenLevel, shadingLevel);
+        if (wanted > screenLevel) ++frame.facesShadingLimited;
+        wantedLevel[static_cast<std::size_t>(f)] = wanted;
         if (!cache_->hasLevel(f, wanted)) {
             // section 4.2's priority: how far the cached level is from the wanted one
             int shown = -1;
             cache_->bestCached(f, wanted, &shown);
+            const double desired = std::min(screen, cache_->levelTolerance(wanted));
             requests.push_back(
                 {cache_->levelTolerance(shown) / std::max(desired, 1e-300), f, wanted});
         }
@@ -221,7 +238,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             shownLevel_[static_cast<std::size_t>(f)] = -1;
             continue;
         }
-        const int wanted = cache_->levelFor(allowedPixels * pixel);
+        const int wanted = wantedLevel[static_cast<std::size_t>(f)];
         int level = -1;
         const FaceLod* lod = cache_->bestCached(f, wanted, &level);
         if (!lod) continue;
@@ -230,6 +247,11 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
         const double errorPx =
             pixel > 0 ? lod->tolerance / pixel : std::numeric_limits<double>::infinity();
         frame.maxScreenErrorPx = std::max(frame.maxScreenErrorPx, errorPx);
+        frame.maxNormalErrorDeg = std::max(frame.maxNormalErrorDeg, lod->maxNormalErrorDeg);
+        frame.maxNormalErrorInteriorDeg =
+            std::max(frame.maxNormalErrorInteriorDeg, lod->maxNormalErrorInteriorDeg);
+        if (normalRadians > 0 && lod->maxNormalErrorDeg > normalDegrees)
+            ++frame.facesNormalErrorOver;
         frame.triangles += lod->triangleCount();
         frame.faceTriangles[static_cast<std::size_t>(f)] = lod->triangleCount();
         glVertexPointer(3, GL_FLOAT, 0, lod->positions.data());

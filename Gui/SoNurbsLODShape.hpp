@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "FaceLodCache.hpp"
+#include "lod/FaceLodCache.hpp"
 
 class SoTimerSensor;
 class SoSensor;
@@ -19,7 +19,11 @@ namespace nurbslod::gui {
 // What the last frame drew, for the macro API's stats() and the tests.
 struct FrameStats {
     std::size_t triangles = 0;
-    double maxScreenErrorPx = 0;            // of the drawn levels, over the visible faces
+    double maxScreenErrorPx = 0;  // of the drawn levels, over the visible faces
+    // Measured on the drawn levels, over the visible faces: the largest angle between a
+    // triangle's facet normal and the exact normals at its corners (FaceLod).
+    double maxNormalErrorDeg = 0;
+    double maxNormalErrorInteriorDeg = 0;   // the same over triangles with corners on the surface
     double lastFrameTessellationMs = 0;     // time the frame spent on LOD work (selection, waiting)
     double lastFrameTessellationCpuMs = 0;  // the same in CPU time of the rendering thread
     double selectionMs = 0;                 // of which choosing levels and culling
@@ -27,6 +31,11 @@ struct FrameStats {
     int facesCulled = 0;
     int facesFailed = 0;
     int facesWaiting = 0;  // visible faces drawn coarser than wanted, a finer level pending
+    // Visible faces whose wanted level the normal error bound made finer than the screen-space
+    // error alone would, and drawn faces whose measured normal error (all triangles) exceeds
+    // the bound.
+    int facesShadingLimited = 0;
+    int facesNormalErrorOver = 0;
     int pendingJobs = 0;
     double workerMs = 0;  // all background tessellation so far, summed over threads
     long long frames = 0;
@@ -63,6 +72,10 @@ public:
 
     SoSFFloat pixelError;   // allowed screen-space error in pixels (0.5)
     SoSFFloat frameBudget;  // milliseconds a frame may spend on LOD work (20)
+    // Largest angle in degrees between the drawn and the exact normals (paper appearance,
+    // section 4.1): each face's level is also within its shading tolerance (ShadingTolerance).
+    // 0 (or anything outside (0, 90)) turns the bound off. Default 1.
+    SoSFFloat normalError;
     // 1-based faces this node does not draw: the selected and pre-selected ones, which
     // FreeCAD's face set draws highlighted (both drawn would fight in the depth buffer).
     SoMFInt32 hiddenFaces;

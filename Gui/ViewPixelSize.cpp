@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "FaceLod.hpp"
+#include "lod/FaceLod.hpp"
 
 namespace nurbslod::gui {
 

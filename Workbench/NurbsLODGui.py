@@ -1,7 +1,7 @@
 """NurbsLODGui: the macro API of the NurbsLOD workbench's display side.
 
     import NurbsLODGui
-    NurbsLODGui.enable_adaptive_display(obj, pixel_error=0.5)
+    NurbsLODGui.enable_adaptive_display(obj, pixel_error=0.5, normal_error_deg=1.0)
     NurbsLODGui.stats(obj)        # what the last frame drew
     NurbsLODGui.set_overlay(obj, "zebra", stripes=12)
     NurbsLODGui.move_pole(obj, face_index, i, j, FreeCAD.Vector(...))
@@ -25,6 +25,9 @@ PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
 # arguments override them.
 DEFAULT_PIXEL_ERROR = 0.5
 DEFAULT_FRAME_BUDGET_MS = 20.0
+# Largest angle between the drawn and the exact normals (appearance-preserving tessellation,
+# paper appearance section 4.1); 0 turns the bound off.
+DEFAULT_NORMAL_ERROR_DEG = 1.0
 
 try:
     from NurbsLODOverlays import set_overlay  # noqa: F401 (re-exported)
@@ -52,6 +55,27 @@ def default_pixel_error():
 def default_frame_budget_ms():
     value = parameters().GetFloat("FrameBudgetMs", DEFAULT_FRAME_BUDGET_MS)
     return value if math.isfinite(value) and value > 0 else DEFAULT_FRAME_BUDGET_MS
+
+
+def default_normal_error_deg():
+    value = parameters().GetFloat("NormalErrorDeg", DEFAULT_NORMAL_ERROR_DEG)
+    return value if math.isfinite(value) and 0 <= value < 90 else DEFAULT_NORMAL_ERROR_DEG
+
+
+def _normal_error(value):
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(
+            "NurbsLOD: normal_error_deg must be a number, got {!r}".format(value)
+        ) from None
+    if not (math.isfinite(number) and 0 <= number < 90):
+        raise ValueError(
+            "NurbsLOD: normal_error_deg must be in [0, 90) degrees (0: off), got {!r}".format(
+                value
+            )
+        )
+    return number
 
 
 def _positive(value, name):
@@ -198,10 +222,14 @@ def report_failures(obj, failures):
         )
 
 
-def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=True):
-    """Draws obj's faces view-dependently: each face within pixel_error pixels on screen.
+def enable_adaptive_display(
+    obj, pixel_error=None, frame_budget_ms=None, wait=True, normal_error_deg=None
+):
+    """Draws obj's faces view-dependently: each face within pixel_error pixels on screen and
+    its normals within normal_error_deg degrees of the exact ones (0: no normal bound).
 
-    pixel_error and frame_budget_ms default to the preferences (0.5 px, 20 ms). With wait
+    pixel_error, frame_budget_ms and normal_error_deg default to the preferences (0.5 px,
+    20 ms, 1 degree). With wait
     (the default) the model is imported here and the summary of the import is returned:
     {faces, faces_failed: [{face, reason}], seconds}. With wait=False the import runs in a
     thread while FreeCAD keeps drawing the object, the swap happens when it is done (see
@@ -212,8 +240,11 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=Tr
         pixel_error = default_pixel_error()
     if frame_budget_ms is None:
         frame_budget_ms = default_frame_budget_ms()
+    if normal_error_deg is None:
+        normal_error_deg = default_normal_error_deg()
     pixel_error = _positive(pixel_error, "pixel_error")
     frame_budget_ms = _positive(frame_budget_ms, "frame_budget_ms")
+    options = (pixel_error, frame_budget_ms, _normal_error(normal_error_deg))
     if not hasattr(obj, "Shape") or obj.Shape.isNull() or not obj.Shape.Faces:
         raise ValueError("NurbsLOD: {} has no faces to display".format(getattr(obj, "Label", obj)))
     if obj.ViewObject is None:
@@ -224,8 +255,8 @@ def enable_adaptive_display(obj, pixel_error=None, frame_budget_ms=None, wait=Tr
     brep = local_shape(obj).exportBrepToString()
     if wait:
         _pending.pop(_key(obj), None)
-        return _install(obj, NurbsLODCoin.prepare(brep), pixel_error, frame_budget_ms)
-    _prepare_in_thread(obj, brep, pixel_error, frame_budget_ms)
+        return _install(obj, NurbsLODCoin.prepare(brep), *options)
+    _prepare_in_thread(obj, brep, options)
     return None
 
 
@@ -236,12 +267,12 @@ _poll_timer = None
 
 
 class _Preparation:
-    def __init__(self, obj, brep, pixel_error, frame_budget_ms):
+    def __init__(self, obj, brep, options):
         import threading
 
         self.obj = obj
         self.label = obj.Label
-        self.options = (pixel_error, frame_budget_ms)
+        self.options = options  # (pixel_error, frame_budget_ms, normal_error_deg)
         self.prepared = None
         self.error = None
         self.thread = threading.Thread(target=self._run, args=(brep,), daemon=True)
@@ -254,11 +285,11 @@ class _Preparation:
             self.error = error
 
 
-def _prepare_in_thread(obj, brep, pixel_error, frame_budget_ms):
+def _prepare_in_thread(obj, brep, options):
     global _poll_timer
     from PySide import QtCore
 
-    preparation = _Preparation(obj, brep, pixel_error, frame_budget_ms)
+    preparation = _Preparation(obj, brep, options)
     _pending[_key(obj)] = preparation
     FreeCAD.Console.PrintMessage("NurbsLOD: {}: preparing adaptive display...\n".format(obj.Label))
     preparation.thread.start()
@@ -310,7 +341,7 @@ def wait_until_ready(obj, seconds=60.0):
     return is_enabled(obj)
 
 
-def _install(obj, prepared, pixel_error, frame_budget_ms):
+def _install(obj, prepared, pixel_error, frame_budget_ms, normal_error_deg):
     """Puts the nodes of a prepared model into obj's view provider; returns the summary."""
     if obj.Document is None or getattr(obj, "ViewObject", None) is None:
         raise RuntimeError("the object was deleted")
@@ -326,6 +357,7 @@ def _install(obj, prepared, pixel_error, frame_budget_ms):
     node.ref()
     node.pixelError = pixel_error
     node.frameBudget = frame_budget_ms
+    node.normalError = normal_error_deg
     try:
         summary = NurbsLODCoin.install(node, prepared)
     except Exception:
@@ -393,9 +425,13 @@ def _display_of(obj):
 
 
 def stats(obj):
-    """What obj's last frame drew: triangles, max_screen_error_px, last_frame_tessellation_ms,
-    faces_visible, faces_culled, faces_failed, faces_waiting (drawn coarser than wanted while
-    a worker makes the finer level), pending_jobs, background_tessellation_ms, frames."""
+    """What obj's last frame drew: triangles, max_screen_error_px, max_normal_error_deg
+    (measured on the drawn triangles: the largest angle between a facet normal and the exact
+    normals at its corners), max_normal_error_interior_deg (the same away from the trimming
+    loops and edge chords), faces_shading_limited (faces the normal bound made finer),
+    normal_error_deg (the bound), last_frame_tessellation_ms, faces_visible, faces_culled,
+    faces_failed, faces_waiting (drawn coarser than wanted while a worker makes the finer
+    level), pending_jobs, background_tessellation_ms, frames."""
     _, NurbsLODCoin = _coin()
     return NurbsLODCoin.stats(_display_of(obj).node)
 

@@ -114,6 +114,10 @@ py::dict stats(const py::object& node) {
     py::dict out;
     out["triangles"] = s.triangles;
     out["max_screen_error_px"] = s.maxScreenErrorPx;
+    out["max_normal_error_deg"] = s.maxNormalErrorDeg;
+    out["max_normal_error_interior_deg"] = s.maxNormalErrorInteriorDeg;
+    out["faces_shading_limited"] = s.facesShadingLimited;
+    out["faces_normal_error_over"] = s.facesNormalErrorOver;
     out["last_frame_tessellation_ms"] = s.lastFrameTessellationMs;
     out["last_frame_tessellation_cpu_ms"] = s.lastFrameTessellationCpuMs;
     out["last_frame_selection_ms"] = s.selectionMs;
@@ -127,6 +131,7 @@ py::dict stats(const py::object& node) {
     out["face_triangles"] = s.faceTriangles;
     out["pixel_error"] = shape->pixelError.getValue();
     out["frame_budget_ms"] = shape->frameBudget.getValue();
+    out["normal_error_deg"] = shape->normalError.getValue();
     out["last_error"] = shape->lastError();
     if (shape->hasModel()) out["failures"] = failureList(*shape->cache());
     return out;
@@ -270,7 +275,8 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
           "[{face, reason}], seconds}.");
     m.def("stats", &stats, py::arg("node"),
           "What the node's last frame drew: triangles, max_screen_error_px, "
-          "last_frame_tessellation_ms, faces_visible, faces_culled, faces_failed, "
+          "max_normal_error_deg (measured), faces_shading_limited, last_frame_tessellation_ms, "
+          "faces_visible, faces_culled, faces_failed, "
           "faces_waiting, pending_jobs, background_tessellation_ms, frames, face_triangles "
           "(per face, 0: not drawn), failures.");
     m.def("replace_face", &replaceFace, py::arg("node"), py::arg("face"), py::arg("brep"),

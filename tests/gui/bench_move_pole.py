@@ -82,7 +82,7 @@ def _run():
         view = FreeCADGui.getDocument(document.Name).activeView()
         view.viewIsometric()
         view.fitAll()
-        NurbsLODGui.enable_adaptive_display(obj)
+        NurbsLODGui.enable_adaptive_display(obj, normal_error_deg=0)  # the edit's cost only
         stats, _, _ = gt.settle(view, obj)
         node = NurbsLODGui.node_of(obj)
         level = NurbsLODCoin.shown_level(node, 1)

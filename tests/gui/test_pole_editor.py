@@ -25,7 +25,7 @@ class PoleEditing(unittest.TestCase):
         self.view = FreeCADGui.getDocument(self.document.Name).activeView()
         self.view.viewIsometric()
         self.view.fitAll()
-        NurbsLODGui.enable_adaptive_display(self.obj)
+        NurbsLODGui.enable_adaptive_display(self.obj, normal_error_deg=0)  # the edit's cost only
         gt.settle(self.view, self.obj)
         self.original = self.obj.Shape.Faces[0].Surface.getPoles()  # document coordinates
         self.original_local = NurbsLODGui.local_shape(self.obj).Faces[0].Surface.getPoles()

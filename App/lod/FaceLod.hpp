@@ -14,7 +14,12 @@ namespace nurbslod::gui {
 // normal at every vertex, paper out-of-core-lod 3.3), triangles as indices. Immutable once
 // made, so a frame can draw it while a worker thread makes the next one.
 struct FaceLod {
-    double tolerance = 0;                // guaranteed distance to the surface, model units
+    double tolerance = 0;  // guaranteed distance to the surface, model units
+    // Measured (measureFacetNormalError): the largest angle between a triangle's facet normal
+    // and the exact normals at its corners, over all triangles not thinner than `tolerance`
+    // and over those whose corners lie on the surface.
+    double maxNormalErrorDeg = 0;
+    double maxNormalErrorInteriorDeg = 0;
     std::vector<float> positions;        // x y z per vertex
     std::vector<float> normals;          // x y z per vertex, unit
     std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise

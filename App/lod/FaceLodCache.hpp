@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "FaceLod.hpp"
+#include "lod/FaceLod.hpp"
 #include "tessellate/Model.hpp"
 
 namespace nurbslod::gui {
@@ -55,6 +55,14 @@ public:
     // The coarsest level whose tolerance is at most `tolerance` (finestLevel() at most).
     int levelFor(double tolerance) const;
 
+    // The largest absolute curvature of the face (maximumCurvature), sampled when the face got
+    // its coarsest level; 0 for a failed face.
+    double maximumCurvature(int face) const { return faces_[face].maximumCurvature; }
+    // The tolerance that keeps the face's normal error within normalErrorRadians
+    // (shadingTolerance with the face's maximum curvature): infinity when the bound is off
+    // (0) or the face is flat.
+    double shadingTolerance(int face, double normalErrorRadians) const;
+
     // The level to draw for a face that wants `wanted`: the coarsest cached level at least as
     // fine, else the finest cached one (coarser than wanted). Null for a failed face.
     const FaceLod* bestCached(int face, int wanted, int* level) const;
@@ -92,7 +100,8 @@ private:
         int pendingLevel = -1;
         int failedLevel = -1;  // the coarsest level that failed; finer ones are not tried
         std::string failure;   // level 0 failed: the face is not drawn
-        int generation = 0;    // bumped by an edit: jobs of an older surface are dropped
+        double maximumCurvature = 0;
+        int generation = 0;  // bumped by an edit: jobs of an older surface are dropped
     };
     struct Finished {
         int face, level, generation;

@@ -1,4 +1,4 @@
-#include "FaceLodCache.hpp"
+#include "lod/FaceLodCache.hpp"
 
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "lod/ShadingTolerance.hpp"
 
 namespace nurbslod::gui {
 
@@ -16,6 +18,19 @@ using Clock = std::chrono::steady_clock;
 namespace {
 int workerThreads() {
     return std::max(1, tbb::info::default_concurrency() - 1);
+}
+
+// The face's maximum curvature, or 0 with the reason in *failure (the face is then not drawn:
+// its normal error could not be bounded).
+double curvatureOf(const TrimmedSurface& face, std::string* failure) {
+    try {
+        return maximumCurvature(face);
+    } catch (const std::exception& error) {
+        *failure = error.what();
+    } catch (...) {
+        *failure = "the curvature could not be evaluated";
+    }
+    return 0;
 }
 }  // namespace
 
@@ -33,10 +48,12 @@ FaceLodCache::FaceLodCache(std::shared_ptr<const Model> model)
             return;
         }
         FaceLodResult result = tessellateFaceLod(*model_, f, tolerance);
-        if (result.lod)
-            state.levels[0] = std::move(result.lod);
-        else
+        if (!result.lod) {
             state.failure = result.failure;
+            return;
+        }
+        state.maximumCurvature = curvatureOf(model_->faces[f], &state.failure);
+        if (state.failure.empty()) state.levels[0] = std::move(result.lod);
     });
 }
 
@@ -66,6 +83,10 @@ int FaceLodCache::levelFor(double tolerance) const {
     // from stepping one level too fine through rounding
     const int level = static_cast<int>(std::ceil(std::log2(ratio) - 1e-9));
     return std::clamp(level, 0, finestLevel_);
+}
+
+double FaceLodCache::shadingTolerance(int face, double normalErrorRadians) const {
+    return gui::shadingTolerance(normalErrorRadians, faces_[face].maximumCurvature);
 }
 
 const FaceLod* FaceLodCache::bestCached(int face, int wanted, int* level) const {
@@ -206,12 +227,17 @@ double FaceLodCache::installFace(int face, std::shared_ptr<Model> edited, int le
     FaceLodResult result = tessellateFaceLod(*edited, face, levelTolerance(level));
     if (!result.lod)
         throw std::runtime_error("face " + std::to_string(face + 1) + ": " + result.failure);
+    std::string curvatureFailure;
+    const double curvature = curvatureOf(edited->faces[face], &curvatureFailure);
+    if (!curvatureFailure.empty())
+        throw std::runtime_error("face " + std::to_string(face + 1) + ": " + curvatureFailure);
     model_ = std::move(edited);
     FaceState& state = faces_[face];
     ++state.generation;
     state.levels.clear();
     state.levels[level] = std::move(result.lod);
     state.failure.clear();
+    state.maximumCurvature = curvature;
     state.failedLevel = -1;
     if (state.pendingLevel >= 0) {
         state.pendingLevel = -1;  // its result will carry the old generation and be dropped

@@ -9,8 +9,8 @@
 #include <limits>
 #include <memory>
 
-#include "FaceLod.hpp"
-#include "FaceLodCache.hpp"
+#include "lod/FaceLod.hpp"
+#include "lod/FaceLodCache.hpp"
 #include "occ/ModelImporter.hpp"
 
 namespace nurbslod::gui {
