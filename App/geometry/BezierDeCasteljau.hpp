@@ -6,9 +6,9 @@
 namespace nurbslod {
 
 // de Casteljau on the Bezier patches of the surface (evaluation paper, section 2.2; de Casteljau
-// 1986) with then// weights of each parameter precomputed (Carriere 1995): per vertex, each row of
-// the patch isn// reduced along v to a point and a v-derivative, then the column of points along u
-// to then// point and the u-derivative, and the column of v-derivatives to the v-derivative.
+// 1986) with the weights of each parameter precomputed (Carriere 1995): per vertex, each row of
+// the patch is reduced along v to a point and a v-derivative, then the column of points along u
+// to the point and the u-derivative, and the column of v-derivatives to the v-derivative.
 class BezierDeCasteljau final : public SurfaceEvaluationMethod {
 public:
     explicit BezierDeCasteljau(const BSplineSurface& surface);

@@ -5,10 +5,10 @@
 
 namespace nurbslod {
 
-// The modified de Casteljau algorithm of Mann and DeRose (1995; evaluation paper, section 2.2):n//
-// de Casteljau stops one level early in both directions, leaving a bilinear 2 x 2 patch whosen//
-// value and edges give the point and both partial derivatives at once. It needs no equaln// degrees
-// in u and v.
+// The modified de Casteljau algorithm of Mann and DeRose (1995; evaluation paper, section 2.2):
+// de Casteljau stops one level early in both directions, leaving a bilinear 2 x 2 patch whose
+// value and edges give the point and both partial derivatives at once. It needs no equal
+// degrees in u and v.
 class ModifiedDeCasteljau final : public SurfaceEvaluationMethod {
 public:
     explicit ModifiedDeCasteljau(const BSplineSurface& surface);
