@@ -7,12 +7,6 @@
 //   BRepMesh cannot be limited to N threads). ANGULAR: radians, default 0.5.
 // Last stdout line: {"faces":..,"triangles":..,"vertices":..,"seconds":..,"deflection":..}
 // where seconds covers BRepMesh_IncrementalMesh only (not reading, not writing).
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <exception>
-#include <string>
-
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -22,6 +16,11 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
 
 #include "occ/ShapeReader.hpp"
 
