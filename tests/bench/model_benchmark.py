@@ -33,7 +33,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 MODEL_EXTENSIONS = (".stp", ".step", ".iges", ".igs", ".brep", ".brp")
 METHODS = ("nurbslod-guaranteed", "nurbslod-approximate", "brepmesh")
-JUDGE = "/work/shared/tools/meshjudge.py"
+# The independent judge, in ../shared/tools beside the checkout.
+JUDGE = os.path.join(os.path.dirname(REPO), "shared", "tools", "meshjudge.py")
 
 
 def last_json(text):
