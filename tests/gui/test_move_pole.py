@@ -118,3 +118,36 @@ class PlacedMovePole(MovePole):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class MovePoleUnderOverlay(unittest.TestCase):
+    """A scripted edit with an analysis overlay on: the overlay follows the new surface."""
+
+    def setUp(self):
+        self.document = FreeCAD.newDocument("EditOverlay")
+        self.addCleanup(gt.close, self.document)
+        self.obj = self.document.addObject("Part::Feature", "Patch")
+        self.obj.Shape = gt.bicubic_face(8)
+        self.document.recompute()
+        self.view = FreeCADGui.getDocument(self.document.Name).activeView()
+        self.view.viewIsometric()
+        self.view.fitAll()
+
+    def test_the_overlay_follows_the_edit(self):
+        import NurbsLODOverlays
+
+        NurbsLODGui.set_overlay(self.obj, "zebra")
+        self.addCleanup(NurbsLODGui.set_overlay, self.obj, None)
+        overlay = NurbsLODOverlays._overlays[(self.document.Name, self.obj.Name)]
+        before = overlay.analysis["points"].copy()
+        pole = self.obj.Shape.Faces[0].Surface.getPole(4, 4)
+        NurbsLODGui.move_pole(self.obj, 1, 4, 4, pole + FreeCAD.Vector(0, 0, 5))
+        self.assertEqual(NurbsLODOverlays.overlay_of(self.obj), "zebra")
+        after = NurbsLODOverlays._overlays[(self.document.Name, self.obj.Name)].analysis["points"]
+        # the overlay's mesh rises where the pole was lifted
+
+        def height_near_pole(points):
+            squared = (points[:, 0] - pole.x) ** 2 + (points[:, 1] - pole.y) ** 2
+            return points[squared.argmin(), 2]
+
+        self.assertGreater(height_near_pole(after), height_near_pole(before) + 0.5)
