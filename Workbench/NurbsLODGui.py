@@ -762,7 +762,7 @@ def move_pole(obj, face_index, i, j, vector):
 
 
 def _refresh_overlay(obj):
-    # An analysis overlay (zebra, isophotes, curvature) shows the new surface too: it is built
+    # After an edit (move_pole, the pole editor's Enter): an analysis overlay (zebra, isophotes, curvature) shows the new surface too: it is built
     # from the shape, not from the node, so it is rebuilt (a fraction of a second).
     try:
         import NurbsLODOverlays

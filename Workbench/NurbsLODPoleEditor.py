@@ -191,6 +191,7 @@ class PoleEditor:
         finally:
             NurbsLODGui._editing = False
             document.commitTransaction()
+        NurbsLODGui._refresh_overlay(self.obj)
         return True
 
     def cancel(self):
