@@ -345,37 +345,28 @@ struct CornerLines {
     }
     // Points strictly between a and b on a common vertical or horizontal line, in order a -> b.
     void between(const IntPoint& a, const IntPoint& b, Path& out) const {
-        if (a.X == b.X) {
-            auto it = onVertical.find(a.X);
-            if (it == onVertical.end()) return;
-            const auto& ys = it->second;
-            if (a.Y < b.Y) {
-                for (auto y = std::upper_bound(ys.begin(), ys.end(), a.Y);
-                     y != ys.end() && *y < b.Y; ++y)
-                    out.push_back({a.X, *y});
-            } else {
-                auto y = std::lower_bound(ys.begin(), ys.end(), a.Y);
-                while (y != ys.begin()) {
-                    --y;
-                    if (*y <= b.Y) break;
-                    out.push_back({a.X, *y});
-                }
-            }
-        } else if (a.Y == b.Y) {
-            auto it = onHorizontal.find(a.Y);
-            if (it == onHorizontal.end()) return;
-            const auto& xs = it->second;
-            if (a.X < b.X) {
-                for (auto x = std::upper_bound(xs.begin(), xs.end(), a.X);
-                     x != xs.end() && *x < b.X; ++x)
-                    out.push_back({*x, a.Y});
-            } else {
-                auto x = std::lower_bound(xs.begin(), xs.end(), a.X);
-                while (x != xs.begin()) {
-                    --x;
-                    if (*x <= b.X) break;
-                    out.push_back({*x, a.Y});
-                }
+        if (a.X == b.X)
+            valuesBetween(onVertical, a.X, a.Y, b.Y, [&](auto y) { out.push_back({a.X, y}); });
+        else if (a.Y == b.Y)
+            valuesBetween(onHorizontal, a.Y, a.X, b.X, [&](auto x) { out.push_back({x, a.Y}); });
+    }
+    // The sorted values that `lines` holds on `line` strictly between from and to, in the order
+    // from -> to: one routine for both directions of both axes.
+    template <class Lines, class Value, class Emit>
+    static void valuesBetween(const Lines& lines, Value line, Value from, Value to, Emit emit) {
+        auto it = lines.find(line);
+        if (it == lines.end()) return;
+        const auto& values = it->second;
+        if (from < to) {
+            for (auto v = std::upper_bound(values.begin(), values.end(), from);
+                 v != values.end() && *v < to; ++v)
+                emit(*v);
+        } else {
+            auto v = std::lower_bound(values.begin(), values.end(), from);
+            while (v != values.begin()) {
+                --v;
+                if (*v <= to) break;
+                emit(*v);
             }
         }
     }
