@@ -42,9 +42,19 @@ def open_model(path, name="Model"):
     """A new document with one Part::Feature holding the file's shape, shown fitted."""
     import Part
 
+    return open_shape(Part.read(path), name)
+
+
+def open_shape(shape, name, placement=None, undo=False):
+    """A new document with one Part::Feature holding shape at placement, shown fitted:
+    (document, obj, view). undo: the document records undo steps (for edits)."""
     document = FreeCAD.newDocument(name)
+    if undo:
+        document.UndoMode = 1
     obj = document.addObject("Part::Feature", name)
-    obj.Shape = Part.read(path)
+    obj.Shape = shape
+    if placement is not None:
+        obj.Placement = placement
     document.recompute()
     view = FreeCADGui.getDocument(document.Name).activeView()
     view.viewIsometric()

@@ -4,7 +4,6 @@ and undo restores the document's shape exactly."""
 import unittest
 
 import FreeCAD
-import FreeCADGui
 
 import gui_testing as gt
 import NurbsLODGui
@@ -14,16 +13,10 @@ class MovePole(unittest.TestCase):
     placement = FreeCAD.Placement()
 
     def setUp(self):
-        self.document = FreeCAD.newDocument("Edit")
+        self.document, self.obj, self.view = gt.open_shape(
+            gt.bicubic_face(20), "Edit", self.placement, undo=True
+        )
         self.addCleanup(gt.close, self.document)
-        self.document.UndoMode = 1
-        self.obj = self.document.addObject("Part::Feature", "Patch")
-        self.obj.Shape = gt.bicubic_face(20)
-        self.obj.Placement = self.placement
-        self.document.recompute()
-        self.view = FreeCADGui.getDocument(self.document.Name).activeView()
-        self.view.viewIsometric()
-        self.view.fitAll()
         NurbsLODGui.enable_adaptive_display(self.obj, normal_error_deg=0)  # the edit's cost only
         gt.settle(self.view, self.obj)
 
@@ -124,14 +117,8 @@ class MovePoleUnderOverlay(unittest.TestCase):
     """A scripted edit with an analysis overlay on: the overlay follows the new surface."""
 
     def setUp(self):
-        self.document = FreeCAD.newDocument("EditOverlay")
+        self.document, self.obj, _ = gt.open_shape(gt.bicubic_face(8), "EditOverlay")
         self.addCleanup(gt.close, self.document)
-        self.obj = self.document.addObject("Part::Feature", "Patch")
-        self.obj.Shape = gt.bicubic_face(8)
-        self.document.recompute()
-        self.view = FreeCADGui.getDocument(self.document.Name).activeView()
-        self.view.viewIsometric()
-        self.view.fitAll()
 
     def test_the_overlay_follows_the_edit(self):
         import NurbsLODOverlays

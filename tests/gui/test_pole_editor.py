@@ -15,16 +15,10 @@ class PoleEditing(unittest.TestCase):
     placement = FreeCAD.Placement()
 
     def setUp(self):
-        self.document = FreeCAD.newDocument("Poles")
+        self.document, self.obj, self.view = gt.open_shape(
+            gt.bicubic_face(20), "Poles", self.placement, undo=True
+        )
         self.addCleanup(gt.close, self.document)
-        self.document.UndoMode = 1
-        self.obj = self.document.addObject("Part::Feature", "Patch")
-        self.obj.Shape = gt.bicubic_face(20)
-        self.obj.Placement = self.placement
-        self.document.recompute()
-        self.view = FreeCADGui.getDocument(self.document.Name).activeView()
-        self.view.viewIsometric()
-        self.view.fitAll()
         NurbsLODGui.enable_adaptive_display(self.obj, normal_error_deg=0)  # the edit's cost only
         gt.settle(self.view, self.obj)
         self.original = self.obj.Shape.Faces[0].Surface.getPoles()  # document coordinates
