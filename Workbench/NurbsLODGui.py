@@ -753,23 +753,11 @@ def move_pole(obj, face_index, i, j, vector):
     finally:
         _editing = False
         document.commitTransaction()
-    _refresh_overlay(obj)
     return {
         "display_ms": node_update["total_ms"] if node_update else None,
         "display": node_update,
         "total_ms": (time.perf_counter() - start) * 1000.0,
     }
-
-
-def _refresh_overlay(obj):
-    # After an edit (move_pole, the pole editor's Enter): an analysis overlay (zebra, isophotes, curvature) shows the new surface too: it is built
-    # from the shape, not from the node, so it is rebuilt (a fraction of a second).
-    try:
-        import NurbsLODOverlays
-    except ImportError:
-        return
-    if NurbsLODOverlays.overlay_of(obj) is not None:
-        NurbsLODOverlays.refresh_overlay(obj)
 
 
 def face_bounds(obj, face_index):

@@ -661,6 +661,7 @@ def set_overlay(obj, kind, **options):
     overlay.kind = kind
     overlay.options = options
     _overlays[_key(obj)] = overlay
+    _observe()
     summary = analysis["summary"]
     result = {
         "kind": kind,
@@ -688,6 +689,39 @@ def refresh_overlay(obj):
         return None
     options = {k: v for k, v in overlay.options.items() if k != "shown_range"}
     return set_overlay(obj, overlay.kind, **options)
+
+
+class _ShapeObserver:
+    """Rebuilds an object's overlay when its shape changes, however it changed: move_pole, the
+    pole editor, undo and redo, a recompute."""
+
+    def slotChangedObject(self, obj, prop):
+        if prop != "Shape" or _key(obj) not in _overlays:
+            return
+        try:
+            refresh_overlay(obj)
+        except Exception as error:  # an observer must not raise into FreeCAD
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: {}: overlay removed, the new shape cannot be analysed: {}\n".format(
+                    obj.Label, error
+                )
+            )
+            overlay = _overlays.pop(_key(obj), None)
+            if overlay is not None:
+                overlay.remove_nodes()
+
+    def slotDeletedDocument(self, document):
+        for key in [key for key in _overlays if key[0] == document.Name]:
+            del _overlays[key]
+
+
+_observers = []
+
+
+def _observe():
+    if not _observers:
+        _observers.append(_ShapeObserver())
+        FreeCAD.addDocumentObserver(_observers[0])
 
 
 # Commands, for the workbench's menu and toolbar: each shows its overlay (with the defaults

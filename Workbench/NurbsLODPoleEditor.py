@@ -191,7 +191,6 @@ class PoleEditor:
         finally:
             NurbsLODGui._editing = False
             document.commitTransaction()
-        NurbsLODGui._refresh_overlay(self.obj)
         return True
 
     def cancel(self):

@@ -114,10 +114,11 @@ if __name__ == "__main__":
 
 
 class MovePoleUnderOverlay(unittest.TestCase):
-    """A scripted edit with an analysis overlay on: the overlay follows the new surface."""
+    """A scripted edit with an analysis overlay on: the overlay follows the new surface, and
+    undo."""
 
     def setUp(self):
-        self.document, self.obj, _ = gt.open_shape(gt.bicubic_face(8), "EditOverlay")
+        self.document, self.obj, _ = gt.open_shape(gt.bicubic_face(8), "EditOverlay", undo=True)
         self.addCleanup(gt.close, self.document)
 
     def test_the_overlay_follows_the_edit(self):
@@ -138,3 +139,7 @@ class MovePoleUnderOverlay(unittest.TestCase):
             return points[squared.argmin(), 2]
 
         self.assertGreater(height_near_pole(after), height_near_pole(before) + 0.5)
+        # and back with undo
+        self.document.undo()
+        undone = NurbsLODOverlays._overlays[(self.document.Name, self.obj.Name)].analysis["points"]
+        self.assertAlmostEqual(height_near_pole(undone), height_near_pole(before), places=9)
