@@ -56,7 +56,7 @@ SoNurbsLODShape::SoNurbsLODShape() {
     SO_NODE_CONSTRUCTOR(SoNurbsLODShape);
     SO_NODE_ADD_FIELD(pixelError, (0.5f));
     SO_NODE_ADD_FIELD(frameBudget, (20.0f));
-    SO_NODE_ADD_FIELD(normalError, (0.0f));  // off, as NurbsLODGui's default
+    SO_NODE_ADD_FIELD(normalError, (1.0f));  // degrees, as NurbsLODGui's default
     SO_NODE_ADD_FIELD(hiddenFaces, (0));
     hiddenFaces.setNum(0);
     redrawSensor_ = new SoTimerSensor(&SoNurbsLODShape::redrawCheck, this);
