@@ -6,6 +6,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "lod/CollapsedCornerNormals.hpp"
 #include "lod/InterpolatedNormalError.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
@@ -47,9 +48,10 @@ namespace {
 
 // The tessellator's mesh indexes positions and normals separately (a crease keeps two
 // normals); client arrays want one index per vertex: one vertex per (position, normal) pair.
-std::shared_ptr<FaceLod> toFaceLod(const Mesh& mesh, double tolerance, const TrimmedSurface& face) {
+std::shared_ptr<FaceLod> toFaceLod(Mesh& mesh, double tolerance, const TrimmedSurface& face) {
     auto lod = std::make_shared<FaceLod>();
     lod->tolerance = tolerance;
+    takeCollapsedCornerNormalsInside(mesh, face);
     lod->maxNormalErrorDeg = measureInterpolatedNormalError(mesh, face).maxDeg;
     std::unordered_map<std::uint64_t, std::uint32_t> vertexOfPair;
     std::fill(lod->boxMin, lod->boxMin + 3, std::numeric_limits<float>::max());
@@ -105,7 +107,7 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         TessellationOptions options;
         options.tolerance = tolerance;
         options.mode = ErrorMode::Guaranteed;  // the screen-space error is a bound, not a guess
-        const TessellationResult tessellation = tessellateModel(single, options);
+        TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;
         } else if (tessellation.mesh.triangles.empty()) {

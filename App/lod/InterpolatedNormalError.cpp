@@ -39,76 +39,99 @@ bool closesIn(const BSplineSurface& surface, int direction) {
 
 }  // namespace
 
+InterpolatedNormalSampler::InterpolatedNormalSampler(const Mesh& mesh, const TrimmedSurface& face)
+    : mesh_(mesh), face_(face) {
+    const BSplineSurface& surface = face.surface;
+    outwards_ = face.reversed ? -1.0 : 1.0;
+    low_ = {surface.knotsU().first(), surface.knotsV().first()};
+    period_ = {surface.knotsU().last() - low_[0], surface.knotsV().last() - low_[1]};
+    closed_ = {closesIn(surface, 0), closesIn(surface, 1)};
+    collapsed_.assign(mesh.normals.size(), -1);
+}
+
+// Whether the corner's vertex sits on a pole: 0 none, 1 the surface collapses along u there
+// (its u says nothing about where a triangle leaves the pole), 2 along v.
+int InterpolatedNormalSampler::collapsedAt(std::uint32_t normal) const {
+    auto classify = [&] {
+        const Point2& uv = mesh_.parameters[normal];
+        const auto d = face_.surface.derivatives(uv.x(), uv.y());
+        const double a = d.du.norm(), b = d.dv.norm();
+        return a <= 1e-8 * b ? 1 : b <= 1e-8 * a ? 2 : 0;
+    };
+    // normals added after the sampler was made may be replaced: not remembered
+    if (normal >= collapsed_.size()) return classify();
+    signed char& known = collapsed_[normal];
+    if (known < 0) known = static_cast<signed char>(classify());
+    return known;
+}
+
+double InterpolatedNormalSampler::angle(std::size_t t, const std::array<double, 3>& weights,
+                                        Point2* sampleParameter) const {
+    const auto& corners = mesh_.triangleNormals[t];
+    std::array<Point2, 3> uv;
+    for (int k = 0; k < 3; ++k) uv[k] = mesh_.parameters[corners[k]];
+    // Across a seam: the corners on the low side moved a period up, next to the others (a pole
+    // corner's parameter is set below from the others).
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!closed_[axis]) continue;
+        double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+        for (int k = 0; k < 3; ++k) {
+            if (collapsedAt(corners[k]) != 0) continue;
+            lowest = std::min(lowest, uv[k][axis]);
+            highest = std::max(highest, uv[k][axis]);
+        }
+        if (!(highest - lowest > 0.5 * period_[axis])) continue;
+        for (Point2& corner : uv)
+            if (corner[axis] < low_[axis] + 0.5 * period_[axis]) corner[axis] += period_[axis];
+    }
+    // A pole corner is a segment of parameter space: the triangle leaves it at the other
+    // corners' collapsed parameter, so a sample takes their weighted mean there.
+    for (int k = 0; k < 3; ++k) {
+        const int axis = collapsedAt(corners[k]) - 1;
+        if (axis < 0) continue;
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        const double rest = weights[a] + weights[b];
+        if (rest > 0 && collapsedAt(corners[a]) == 0 && collapsedAt(corners[b]) == 0)
+            uv[k][axis] = (weights[a] * uv[a][axis] + weights[b] * uv[b][axis]) / rest;
+    }
+    Point2 sample = weights[0] * uv[0] + weights[1] * uv[1] + weights[2] * uv[2];
+    for (int axis = 0; axis < 2; ++axis)
+        if (closed_[axis] && sample[axis] > low_[axis] + period_[axis])
+            sample[axis] -= period_[axis];
+    if (sampleParameter) *sampleParameter = sample;
+    const Vector3 interpolated = weights[0] * mesh_.normals[corners[0]] +
+                                 weights[1] * mesh_.normals[corners[1]] +
+                                 weights[2] * mesh_.normals[corners[2]];
+    return angleBetween(interpolated, outwards_ * face_.surface.normal(sample.x(), sample.y()));
+}
+
+double InterpolatedNormalSampler::triangleMaxDeg(std::size_t t, int steps) const {
+    steps = std::max(steps, 2);
+    double largest = angle(t, {1.0 / 3, 1.0 / 3, 1.0 / 3}, nullptr);
+    for (int i = 0; i <= steps; ++i)
+        for (int j = 0; i + j <= steps; ++j) {
+            if (i == steps || j == steps || i + j == 0) continue;  // a corner
+            const double a = double(i) / steps, b = double(j) / steps;
+            largest = std::max(largest, angle(t, {a, b, 1 - a - b}, nullptr));
+        }
+    return largest * 180.0 / std::numbers::pi;
+}
+
 InterpolatedNormalError measureInterpolatedNormalError(const Mesh& mesh, const TrimmedSurface& face,
                                                        int steps) {
     InterpolatedNormalError error;
     if (mesh.parameters.size() != mesh.normals.size()) return error;
     steps = std::max(steps, 2);
-    const BSplineSurface& surface = face.surface;
-    const double outwards = face.reversed ? -1.0 : 1.0;
-    const std::array<double, 2> low = {surface.knotsU().first(), surface.knotsV().first()};
-    const std::array<double, 2> period = {surface.knotsU().last() - low[0],
-                                          surface.knotsV().last() - low[1]};
-    const std::array<bool, 2> closed = {closesIn(surface, 0), closesIn(surface, 1)};
-    // Which corners sit on a pole, by normal index: -1 not yet known, 0 none, 1 the surface
-    // collapses along u there (its u says nothing about where a triangle leaves the pole),
-    // 2 along v.
-    std::vector<signed char> collapsed(mesh.normals.size(), -1);
-    auto collapsedAt = [&](std::uint32_t normal) {
-        signed char& known = collapsed[normal];
-        if (known < 0) {
-            const Point2& uv = mesh.parameters[normal];
-            const auto d = surface.derivatives(uv.x(), uv.y());
-            const double a = d.du.norm(), b = d.dv.norm();
-            known = a <= 1e-8 * b ? 1 : b <= 1e-8 * a ? 2 : 0;
-        }
-        return known;
-    };
+    const InterpolatedNormalSampler sampler(mesh, face);
     double largest = 0;
-    // The angle at barycentric `weights` of triangle t.
     auto sampleAngle = [&](std::size_t t, const std::array<double, 3>& weights) {
-        const auto& corners = mesh.triangleNormals[t];
-        std::array<Point2, 3> uv;
-        for (int k = 0; k < 3; ++k) uv[k] = mesh.parameters[corners[k]];
-        // Across a seam: the corners on the low side moved a period up, next to the others
-        // (a pole corner's parameter is set below from the others).
-        for (int axis = 0; axis < 2; ++axis) {
-            if (!closed[axis]) continue;
-            double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-            for (int k = 0; k < 3; ++k) {
-                if (collapsedAt(corners[k]) != 0) continue;
-                lowest = std::min(lowest, uv[k][axis]);
-                highest = std::max(highest, uv[k][axis]);
-            }
-            if (!(highest - lowest > 0.5 * period[axis])) continue;
-            for (Point2& corner : uv)
-                if (corner[axis] < low[axis] + 0.5 * period[axis]) corner[axis] += period[axis];
-        }
-        // A pole corner is a segment of parameter space: the triangle leaves it at the other
-        // corners' collapsed parameter, so a sample takes their weighted mean there.
-        for (int k = 0; k < 3; ++k) {
-            const int axis = collapsedAt(corners[k]) - 1;
-            if (axis < 0) continue;
-            const int a = (k + 1) % 3, b = (k + 2) % 3;
-            const double rest = weights[a] + weights[b];
-            if (rest > 0 && collapsedAt(corners[a]) == 0 && collapsedAt(corners[b]) == 0)
-                uv[k][axis] = (weights[a] * uv[a][axis] + weights[b] * uv[b][axis]) / rest;
-        }
-        Point2 sample = weights[0] * uv[0] + weights[1] * uv[1] + weights[2] * uv[2];
-        for (int axis = 0; axis < 2; ++axis)
-            if (closed[axis] && sample[axis] > low[axis] + period[axis])
-                sample[axis] -= period[axis];
-        const Vector3 interpolated = weights[0] * mesh.normals[corners[0]] +
-                                     weights[1] * mesh.normals[corners[1]] +
-                                     weights[2] * mesh.normals[corners[2]];
-        const double angle =
-            angleBetween(interpolated, outwards * surface.normal(sample.x(), sample.y()));
+        Point2 sample;
+        const double angle = sampler.angle(t, weights, &sample);
         if (angle > largest) {
             largest = angle;
             error.worstTriangle = t;
             error.worstParameter = sample;
         }
-        return angle;
     };
     // The points of an edge are shared by its two triangles: measured once, by its corners'
     // normal indices (which carry the (u, v)).

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <vector>
+
 #include "tessellate/Mesh.hpp"
 #include "trim/TrimmedSurface.hpp"
 
@@ -48,5 +52,28 @@ struct InterpolatedNormalError {
 // many parameters of the collapsed row (the sample takes the other corners' there).
 InterpolatedNormalError measureInterpolatedNormalError(const Mesh& mesh, const TrimmedSurface& face,
                                                        int steps = 4);
+
+// The samples of the measure, one triangle at a time (for choosing a corner's normal). Holds
+// references to the mesh and the face; normals added to the mesh later (and changed) are read
+// too.
+class InterpolatedNormalSampler {
+public:
+    InterpolatedNormalSampler(const Mesh& mesh, const TrimmedSurface& face);
+    // The angle in radians at barycentric `weights` of triangle t, with the (u, v) of the
+    // sample (seams and poles mended as described above).
+    double angle(std::size_t t, const std::array<double, 3>& weights, Point2* sample) const;
+    // The largest angle in degrees over the samples of triangle t (centroid and the grid).
+    double triangleMaxDeg(std::size_t t, int steps = 4) const;
+
+private:
+    int collapsedAt(std::uint32_t normal) const;
+    const Mesh& mesh_;
+    const TrimmedSurface& face_;
+    double outwards_ = 1;
+    std::array<double, 2> low_{}, period_{};
+    std::array<bool, 2> closed_{};
+    // by normal index, of the normals the mesh had when the sampler was made; -1: not yet known
+    mutable std::vector<signed char> collapsed_;
+};
 
 }  // namespace nurbslod::gui
