@@ -37,8 +37,10 @@ struct InterpolatedNormalError {
 // Measures the mesh of `face`: mesh.parameters holds each normal's (u, v), and mesh.normals
 // the exact normals drawn at the corners (at a pole, the limit normal that
 // BSplineSurface::normal takes), turned outwards like the tessellator's for a reversed face.
-// Samples every triangle at its centroid and on a barycentric grid of `steps` steps per edge
-// (corners left out: there the drawn normal is the exact one). The error's maximum inside a
+// Samples every triangle at its centroid and on a barycentric grid of `steps` steps per edge,
+// corners left out: the drawn normal there is the exact one, or at a (nearly) collapsed
+// corner the triangle's own (CollapsedCornerNormals), where the exact normal is that of a
+// sliver far narrower than the triangle or has no limit at all. The error's maximum inside a
 // triangle is not at a fixed point (it is where the second derivatives of n put it), so a
 // few samples under-read it on large triangles: on the corpus (trj7) and the sample model,
 // centroid and edge midpoints alone read up to 11 times low, 3 steps up to 1.5 times, 4
