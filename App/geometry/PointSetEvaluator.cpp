@@ -151,14 +151,17 @@ using DirectSums = void (*)(const BSplineSurface&, int, int, const double*, cons
                             HomogeneousPoint3&);
 
 // The degrees of nearly every CAD surface (planes 1, conics 2, free forms 3) get their own
-// unrolled kernel; other degrees the general loops.
+// unrolled kernel; a high degree in u over a low one in v (swept and lofted faces) keeps the
+// inner loop unrolled; other degrees take the general loops.
 template <bool kNormals>
 DirectSums directSumsFor(int pu, int pv) {
     static constexpr DirectSums fixed[3][3] = {
         {&directSums<1, 1, kNormals>, &directSums<1, 2, kNormals>, &directSums<1, 3, kNormals>},
         {&directSums<2, 1, kNormals>, &directSums<2, 2, kNormals>, &directSums<2, 3, kNormals>},
         {&directSums<3, 1, kNormals>, &directSums<3, 2, kNormals>, &directSums<3, 3, kNormals>}};
-    if (pu >= 1 && pu <= 3 && pv >= 1 && pv <= 3) return fixed[pu - 1][pv - 1];
+    static constexpr DirectSums fixedV[3] = {
+        &directSums<0, 1, kNormals>, &directSums<0, 2, kNormals>, &directSums<0, 3, kNormals>};
+    if (pv >= 1 && pv <= 3) return pu >= 1 && pu <= 3 ? fixed[pu - 1][pv - 1] : fixedV[pv - 1];
     return &directSums<0, 0, kNormals>;
 }
 
