@@ -21,8 +21,9 @@ namespace nurbslod {
 // evaluates each pair directly from the cached basis functions instead, whichever does fewer
 // multiply-adds. Groups are spread over threads with oneTBB for large sets.
 //
-// Set-up is a sort of the pairs' u and v values: no hashing, no copy of the surface, so that a
-// face of twenty vertices pays no more than its twenty evaluations.
+// Set-up is cheap, so that a face of a few dozen vertices pays little more than their
+// evaluations: no copy of the surface, one small open-addressing table per direction for the
+// distinct values; basis functions and sums run in loops of fixed length for the common degrees.
 class PointSetEvaluator {
 public:
     // Throws std::invalid_argument naming the problem if the surface cannot be evaluated. The
