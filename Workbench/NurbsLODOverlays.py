@@ -662,35 +662,144 @@ def _with_face_replaced(analysis, face_index, replacement):
 LIVE_COARSENING = 16.0
 
 
-def follow_face(obj, face_index, face, coarsening=LIVE_COARSENING):
-    """Shows face face_index (1-based) of the object's overlay as `face` (a Part.Face in the
-    shape's own coordinates) while the document keeps the old face: the pole editor calls it
-    on every live move, so the stripes follow the drag. Only that face is tessellated again,
-    at `coarsening` times the overlay's tolerance; a curvature map keeps its colour range, so
-    colours stay comparable during the drag. Returns the milliseconds it took, or None when
-    the object shows no overlay. The document's next shape change (the edit written, undo) or
-    refresh_overlay rebuilds the whole overlay from the document."""
-    import time
-
-    import NurbsLOD
-
+def _live_tolerance(obj, coarsening):
     overlay = _overlays.get(_key(obj))
     if overlay is None or overlay.analysis is None:
         return None
-    start = time.perf_counter()
-    tolerance = overlay.analysis["summary"]["tolerance"] * coarsening
+    return overlay.analysis["summary"]["tolerance"] * coarsening
+
+
+def _analyse_face(face, tolerance):
+    """The analysis mesh of one face (may run in a worker thread: analysis_mesh releases the
+    GIL while it tessellates)."""
+    import NurbsLOD
+
     replacement = NurbsLOD.analysis_mesh(face, tolerance=tolerance)
     failed = replacement["summary"]["faces_failed"]
     if failed:
-        raise ValueError(
-            "NurbsLOD: the overlay of {} keeps the old face {}: {}".format(
-                obj.Label, face_index, failed[0]["reason"]
-            )
-        )
+        raise ValueError(failed[0]["reason"])
+    return replacement
+
+
+def _show_face(obj, face_index, replacement):
+    """Splices a face's new analysis mesh into the object's overlay and redraws it (GUI
+    thread). False when the overlay is gone meanwhile."""
+    overlay = _overlays.get(_key(obj))
+    if overlay is None or overlay.analysis is None:
+        return False
     overlay.analysis = _with_face_replaced(overlay.analysis, face_index, replacement)
     overlay.analysis_key = None  # no longer the document's shape
     overlay.show(overlay.build(overlay.kind, overlay.options))
+    return True
+
+
+def follow_face(obj, face_index, face, coarsening=LIVE_COARSENING):
+    """Shows face face_index (1-based) of the object's overlay as `face` (a Part.Face in the
+    shape's own coordinates) while the document keeps the old face, at once: a scripted pole
+    move. Only that face is tessellated again, at `coarsening` times the overlay's tolerance;
+    a curvature map keeps its colour range, so colours stay comparable during an edit.
+    Returns the milliseconds it took, or None when the object shows no overlay. The
+    document's next shape change (the edit written, undo) or refresh_overlay rebuilds the
+    whole overlay from the document. A drag uses LiveFaceFollower instead."""
+    import time
+
+    tolerance = _live_tolerance(obj, coarsening)
+    if tolerance is None:
+        return None
+    start = time.perf_counter()
+    try:
+        replacement = _analyse_face(face, tolerance)
+    except ValueError as error:
+        raise ValueError(
+            "NurbsLOD: the overlay of {} keeps the old face {}: {}".format(
+                obj.Label, face_index, error
+            )
+        )
+    _show_face(obj, face_index, replacement)
     return 1000.0 * (time.perf_counter() - start)
+
+
+class LiveFaceFollower:
+    """Follows one face of an object's overlay during a drag without holding up the view: the
+    face is analysed in a worker thread while the GUI goes on drawing (the node shows the new
+    face at once), and the newest result is spliced in on the GUI thread. Moves that come
+    while a worker runs are coalesced: only the last one is analysed next."""
+
+    POLL_MS = 15
+
+    def __init__(self, obj, face_index, coarsening=LIVE_COARSENING):
+        from PySide import QtCore
+
+        self.obj = obj
+        self.face_index = face_index
+        self.coarsening = coarsening
+        self.pending = None
+        self.worker = None
+        self.outcome = None
+        self.shown = 0  # results spliced in so far
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(self.POLL_MS)
+        self.timer.timeout.connect(self._poll)
+
+    def submit(self, face):
+        """Asks for `face` to be shown; returns at once."""
+        self.pending = face
+        if self.worker is None:
+            self._start()
+
+    def busy(self):
+        return self.worker is not None or self.pending is not None
+
+    def _start(self):
+        import threading
+
+        face, self.pending = self.pending, None
+        tolerance = _live_tolerance(self.obj, self.coarsening)
+        if face is None or tolerance is None:
+            self.timer.stop()
+            return
+
+        def work():
+            try:
+                self.outcome = ("mesh", _analyse_face(face, tolerance))
+            except Exception as error:  # reported on the GUI thread
+                self.outcome = ("error", error)
+
+        self.outcome = None
+        self.worker = threading.Thread(target=work, name="NurbsLOD live overlay", daemon=True)
+        self.worker.start()
+        self.timer.start()
+
+    def _poll(self):
+        if self.worker is None:
+            self.timer.stop()
+            return
+        if self.worker.is_alive():
+            return
+        self.worker = None
+        outcome, self.outcome = self.outcome, None
+        if outcome is not None and outcome[0] == "mesh":
+            if _show_face(self.obj, self.face_index, outcome[1]):
+                self.shown += 1
+        elif outcome is not None:
+            FreeCAD.Console.PrintWarning(
+                "NurbsLOD: the overlay of {} keeps the old face {}: {}\n".format(
+                    self.obj.Label, self.face_index, outcome[1]
+                )
+            )
+        if self.pending is not None:
+            self._start()
+        else:
+            self.timer.stop()
+
+    def stop(self):
+        """Drops what is pending and waits for a running worker (its result is dropped)."""
+        self.pending = None
+        self.timer.stop()
+        if self.worker is not None:
+            self.worker.join()
+            self.worker = None
+        self.outcome = None
 
 
 def set_overlay(obj, kind, **options):

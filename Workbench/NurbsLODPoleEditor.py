@@ -89,6 +89,7 @@ class PoleEditor:
             self.root.addChild(child)
         self.dragger = None
         self.dragged = None
+        self.follower = None  # the overlay's background follower during a drag
         self.view.getSceneGraph().addChild(self.root)
         self.callbacks = []
 
@@ -107,7 +108,7 @@ class PoleEditor:
         """Pole (i, j) (1-based) as it is now, in document coordinates."""
         return self.placement.multVec(self.poles[i - 1][j - 1])
 
-    def _move_local(self, i, j, position):
+    def _move_local(self, i, j, position, dragging=False):
         import NurbsLODCoin
 
         position = NurbsLODGui._finite_vector(position)
@@ -126,7 +127,7 @@ class PoleEditor:
         self.moved.add((i, j))
         index = (i - 1) * columns + (j - 1)
         self.coordinates.point.set1Value(index, position.x, position.y, position.z)
-        self._follow_overlay(timing)
+        self._follow_overlay(timing, dragging)
         self.timings.append(timing)
         return timing
 
@@ -140,15 +141,23 @@ class PoleEditor:
             surface.setPole(i, j, self.poles[i - 1][j - 1])
         return shape, face, NurbsLODGui._face_on_surface(face, surface)
 
-    def _follow_overlay(self, timing):
-        """An analysis overlay the object shows follows the live face; its cost goes into
-        timing["overlay_ms"]. A face the overlay cannot analyse keeps the old stripes."""
+    def _follow_overlay(self, timing, dragging):
+        """An analysis overlay the object shows follows the live face: at once for a scripted
+        move (its cost goes into timing["overlay_ms"]), in the background during a drag, so
+        that the view keeps up with the mouse. A face the overlay cannot analyse keeps the old
+        stripes."""
         if NurbsLODOverlays.overlay_of(self.obj) is None:
             return
         try:
-            timing["overlay_ms"] = NurbsLODOverlays.follow_face(
-                self.obj, self.face_index, self._edited_face()[2]
-            )
+            face = self._edited_face()[2]
+            if dragging:
+                if self.follower is None:
+                    self.follower = NurbsLODOverlays.LiveFaceFollower(self.obj, self.face_index)
+                self.follower.submit(face)
+            else:
+                timing["overlay_ms"] = NurbsLODOverlays.follow_face(
+                    self.obj, self.face_index, face
+                )
         except Exception as error:
             FreeCAD.Console.PrintWarning("{}\n".format(error))
 
@@ -171,7 +180,9 @@ class PoleEditor:
             return
         x, y, z = dragger.translation.getValue().getValue()
         try:  # the dragger sits under the net's transform: shape coordinates
-            self._move_local(self.dragged[0], self.dragged[1], FreeCAD.Vector(x, y, z))
+            self._move_local(
+                self.dragged[0], self.dragged[1], FreeCAD.Vector(x, y, z), dragging=True
+            )
         except Exception as error:  # a callback must not raise into Coin
             FreeCAD.Console.PrintError("NurbsLOD: pole not moved: {}\n".format(error))
 
@@ -226,6 +237,9 @@ class PoleEditor:
 
     def _close(self):
         self.release()
+        if self.follower is not None:
+            self.follower.stop()
+            self.follower = None
         for event_type, callback in self.callbacks:
             self.view.removeEventCallbackPivy(event_type, callback)
         self.callbacks = []

@@ -11,7 +11,9 @@ times and prints a table, side by side in one run:
     re-meshing its face set, which stays for picking);
   - move_pole with FreeCAD's own display: the same edits without the node;
   - the pole editor's live moves with zebra stripes on: the node, and the overlay following
-    (the edited face analysed again and spliced into the overlay's mesh).
+    (the edited face analysed again and spliced into the overlay's mesh); then the same as
+    drag steps through the dragger, where the overlay follows in a worker thread: how long
+    the GUI thread is held per step, and how long until the stripes show the step.
 """
 
 import os
@@ -77,9 +79,24 @@ def _editor_moves_under_zebra(obj, view):
         timing = editor.move(i, j, editor.pole(i, j) + step)
         node.append(timing["total_ms"])
         overlay.append(timing["overlay_ms"])
+    # the same through the dragger, as a user drags: the overlay follows in a worker thread
+    from PySide import QtGui
+
+    drag, shown = [], []
+    for k in range(MOVES):
+        i, j = 3 + (k * 7) % 14, 3 + (k * 5) % 14
+        dragger = editor.grab(i, j)
+        pole = editor.poles[i - 1][j - 1]
+        start = time.perf_counter()
+        dragger.translation.setValue(pole.x, pole.y, pole.z + (2.0 if k % 2 else -2.0))
+        drag.append((time.perf_counter() - start) * 1000.0)
+        while editor.follower is not None and editor.follower.busy():
+            QtGui.QApplication.processEvents()
+            time.sleep(0.001)
+        shown.append((time.perf_counter() - start) * 1000.0)
     editor.cancel()
     NurbsLODOverlays.set_overlay(obj, None)
-    return node, overlay
+    return node, overlay, drag, shown
 
 
 def _row(name, values):
@@ -112,7 +129,7 @@ def _run():
         level = NurbsLODCoin.shown_level(node, 1)
         on = _moves(obj, MOVES, view)
         stats_after, _, _ = gt.settle(view, obj)
-        editor_node, editor_overlay = _editor_moves_under_zebra(obj, view)
+        editor_node, editor_overlay, drag, shown = _editor_moves_under_zebra(obj, view)
         NurbsLODGui.disable_adaptive_display(obj)
         off = _moves(obj, MOVES)
 
@@ -130,6 +147,8 @@ def _run():
         print(_row("move_pole, FreeCAD's own display", off["total"]))
         print(_row("pole editor live move, zebra on: node at level 0", editor_node))
         print(_row("pole editor live move, zebra on: overlay follows", editor_overlay))
+        print(_row("drag step, zebra on: GUI thread busy (node + face)", drag))
+        print(_row("drag step, zebra on: until the stripes show it", shown))
         print("ratio node / FreeCAD's own display (medians): {:.2f}".format(
             statistics.median(on["node"]) / statistics.median(off["total"])))
         print("settled after the moves: {:.3f} px, {} triangles".format(

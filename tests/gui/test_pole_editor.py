@@ -92,6 +92,40 @@ class PoleEditing(unittest.TestCase):
         overlay = NurbsLODOverlays._overlays[NurbsLODOverlays._key(self.obj)]
         self.assertAlmostEqual(float(overlay.analysis["points"][:, 2].max()), top_before, delta=1e-9)
 
+    def test_an_overlay_follows_a_drag_in_the_background(self):
+        import time
+
+        from PySide import QtGui
+
+        import NurbsLODOverlays
+
+        NurbsLODOverlays.set_overlay(self.obj, "zebra", stripes=12)
+        self.addCleanup(NurbsLODOverlays.set_overlay, self.obj, None)
+        key = NurbsLODOverlays._key(self.obj)
+        top_before = float(NurbsLODOverlays._overlays[key].analysis["points"][:, 2].max())
+        editor = NurbsLODPoleEditor.PoleEditor(self.obj, 1, self.view)
+        self.addCleanup(editor.cancel)
+        dragger = editor.grab(10, 10)
+        for height in (10.0, 20.0, 30.0):  # three drag steps, coalesced while a worker runs
+            local = self.placement.inverse().multVec(self.lifted(10, 10, height))
+            dragger.translation.setValue(local.x, local.y, local.z)
+        self.assertIsNotNone(editor.follower)
+        deadline = time.monotonic() + 30.0
+        while editor.follower.busy() and time.monotonic() < deadline:
+            QtGui.QApplication.processEvents()
+            time.sleep(0.01)
+        self.assertFalse(editor.follower.busy())
+        self.assertGreaterEqual(editor.follower.shown, 1)
+        self.assertLessEqual(editor.follower.shown, 3)
+        top = float(NurbsLODOverlays._overlays[key].analysis["points"][:, 2].max())
+        self.assertGreater(top, top_before + 5.0)
+        # the last step's face, not an earlier one's
+        last = NurbsLODOverlays._analyse_face(
+            editor._edited_face()[2],
+            NurbsLODOverlays._live_tolerance(self.obj, NurbsLODOverlays.LIVE_COARSENING),
+        )
+        self.assertAlmostEqual(top, float(last["points"][:, 2].max()), delta=1e-9)
+
     def test_a_dragged_pole_moves_live(self):
         editor = NurbsLODPoleEditor.PoleEditor(self.obj, 1, self.view)
         self.addCleanup(editor.cancel)
