@@ -50,7 +50,33 @@ struct DifferenceRange {
     double largestValue = 0;   // largest |E| at the parts' corners: a lower bound of max |E|
 };
 
-DifferenceRange rangeOf(const BezierPatch& difference, int pieces) {
+// The largest distance between a point of `from` and a point of `to`. Exact, without all the
+// pairs: with c the centre of `to`'s bounding box and R the largest |q - c| over `to`, no pair
+// with p is farther than |p - c| + R, so after the pairs of the point farthest from c only the
+// points that can still beat the largest distance found are taken.
+double farthestPair(const std::vector<Point3>& from, const std::vector<Point3>& to) {
+    Point3 low = to.front(), high = to.front();
+    for (const Point3& q : to) low = low.cwiseMin(q), high = high.cwiseMax(q);
+    const Point3 centre = 0.5 * (low + high);
+    double radius = 0;
+    for (const Point3& q : to) radius = std::max(radius, (q - centre).norm());
+    std::vector<double> reach(from.size());
+    size_t first = 0;
+    for (size_t i = 0; i < from.size(); ++i) {
+        reach[i] = (from[i] - centre).norm() + radius;
+        if (reach[i] > reach[first]) first = i;
+    }
+    double farthest2 = 0;
+    auto pairsOf = [&](size_t i) {
+        for (const Point3& q : to) farthest2 = std::max(farthest2, (from[i] - q).squaredNorm());
+    };
+    pairsOf(first);
+    for (size_t i = 0; i < from.size(); ++i)
+        if (i != first && reach[i] * reach[i] > farthest2) pairsOf(i);
+    return std::sqrt(farthest2);
+}
+
+DifferenceRange rangeOf(const BezierPatch& difference, int pieces, bool trimmedCell) {
     const int degreeU = difference.degreeU(), degreeV = difference.degreeV();
     std::vector<Point3> points, sidePoints;
     DifferenceRange range;
@@ -73,22 +99,18 @@ DifferenceRange rangeOf(const BezierPatch& difference, int pieces) {
         }
     for (const Point3& p : points) range.interior = std::max(range.interior, p.norm());
     for (const Point3& p : sidePoints) range.boundary = std::max(range.boundary, p.norm());
-    double spreadToEdges2 = 0, spread2 = 0;
-    for (const Point3& p : points)
-        for (const Point3& q : sidePoints)
-            spreadToEdges2 = std::max(spreadToEdges2, (p - q).squaredNorm());
-    for (size_t i = 0; i < points.size(); ++i)
-        for (size_t j = i + 1; j < points.size(); ++j)
-            spread2 = std::max(spread2, (points[i] - points[j]).squaredNorm());
-    range.spreadToEdges = std::sqrt(spreadToEdges2);
-    range.spread = std::sqrt(spread2);
+    // only the one the cell needs is measured; the other keeps the plain triangle inequality
+    range.spreadToEdges =
+        trimmedCell ? range.interior + range.boundary : farthestPair(points, sidePoints);
+    range.spread = trimmedCell ? farthestPair(points, points) : 2 * range.interior;
     return range;
 }
 
 // Subdivision of E pays only near the target: far above it the cell is split anyway.
-constexpr double kWorthRefining = 3.0;
-// Parts per side tried: 1 (E's own net), then 2 and 4.
-constexpr int kMostPieces = 4;
+constexpr double kWorthRefining = 2.0;
+// Parts per side tried: 1 (E's own net), then 2; 4 parts were measured to save under 0.1 % of
+// the triangles on the corpus at about 5 % more time.
+constexpr int kMostPieces = 2;
 
 }  // namespace
 
@@ -151,12 +173,12 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
         };
         bound.interior = bound.boundary = bound.spreadToEdges = bound.spread =
             std::numeric_limits<double>::infinity();
-        keep(rangeOf(difference, 1));
+        keep(rangeOf(difference, 1, trimmedCell));
         auto relevant = [&] { return trimmedCell ? bound.trimmed() : bound.untrimmed(); };
         for (int pieces = 2;
              pieces <= kMostPieces && relevant() > target && relevant() <= kWorthRefining * target;
              pieces *= 2) {
-            const DifferenceRange range = rangeOf(difference, pieces);
+            const DifferenceRange range = rangeOf(difference, pieces, trimmedCell);
             keep(range);
             // both bounds are at least max |E| + twist (E = 0 at the corners, which are on the
             // sides): a surface point that far off means no subdivision can reach the target

@@ -71,18 +71,22 @@ TEST(CellErrorBound, GuaranteedBoundIsNeverBelowAMeasuredDistance) {
             for (double noise : {0.0, 0.05, 0.2})
                 for (int trial = 0; trial < 4; ++trial) {
                     const BezierPatch patch = randomPatch(random, degreeU, degreeV, noise);
-                    const CellErrorBound coarse = cellErrorBound(patch, ErrorMode::Guaranteed);
-                    // targets that make the bound subdivide E once, twice, or not at all
-                    for (double fraction : {1.0, 0.7, 0.45, 0.34}) {
-                        const double target = fraction * coarse.untrimmed();
-                        for (bool trimmedCell : {false, true}) {
+                    const double two =
+                        std::max(sampledTriangleDistance(patch, {0, 0}, {1, 0}, {1, 1}),
+                                 sampledTriangleDistance(patch, {0, 0}, {1, 1}, {0, 1}));
+                    for (bool trimmedCell : {false, true}) {
+                        const CellErrorBound coarse =
+                            cellErrorBound(patch, ErrorMode::Guaranteed, 0, trimmedCell);
+                        auto relevant = [&](const CellErrorBound& b) {
+                            return trimmedCell ? b.trimmed() : b.untrimmed();
+                        };
+                        // targets that make the bound subdivide E or not
+                        for (double fraction : {1.0, 0.8, 0.6, 0.45}) {
+                            const double target = fraction * relevant(coarse);
                             const CellErrorBound bound =
                                 cellErrorBound(patch, ErrorMode::Guaranteed, target, trimmedCell);
-                            EXPECT_LE(bound.untrimmed(), coarse.untrimmed() + 1e-15);
+                            EXPECT_LE(relevant(bound), relevant(coarse) + 1e-15);
                             // the cell's two triangles
-                            const double two =
-                                std::max(sampledTriangleDistance(patch, {0, 0}, {1, 0}, {1, 1}),
-                                         sampledTriangleDistance(patch, {0, 0}, {1, 1}, {0, 1}));
                             EXPECT_LE(two, bound.untrimmed() * (1 + 1e-9) + 1e-12);
                             // triangles with corners on the sides (a neighbour's points)
                             for (int k = 0; k < 6; ++k) {
@@ -102,7 +106,7 @@ TEST(CellErrorBound, GuaranteedBoundIsNeverBelowAMeasuredDistance) {
                         }
                     }
                 }
-    EXPECT_EQ(checked, 4 * 3 * 3 * 4 * 4 * 2);
+    EXPECT_EQ(checked, 4 * 3 * 3 * 4 * 2 * 4);
 }
 
 // A cylinder piece of 30 degrees (rational quadratic arc, middle weight cos 15 deg) bulges to
@@ -128,7 +132,10 @@ TEST(CellErrorBound, CylinderPieceBoundIsClose) {
     const CellErrorBound coarse = cellErrorBound(patch, ErrorMode::Guaranteed);
     EXPECT_GE(coarse.interior + coarse.boundary + coarse.twist, 2.6 * sagitta);
     EXPECT_GE(coarse.untrimmed(), sagitta);
-    EXPECT_LE(coarse.trimmed(), 1.4 * sagitta);
+    EXPECT_LE(coarse.untrimmed(), 1.4 * sagitta);
+    const CellErrorBound coarseTrimmed = cellErrorBound(patch, ErrorMode::Guaranteed, 0, true);
+    EXPECT_GE(coarseTrimmed.trimmed(), sagitta);
+    EXPECT_LE(coarseTrimmed.trimmed(), 1.4 * sagitta);
     const CellErrorBound refined =
         cellErrorBound(patch, ErrorMode::Guaranteed, 0.99 * sagitta, true);
     EXPECT_GE(refined.untrimmed(), sagitta);
