@@ -12,9 +12,9 @@ namespace {
 // E = S - B over the cell as a rational Bezier patch of degree (m+1, n+1): homogeneous points
 // (c_IJ, w_IJ) with c the coefficients of N - w B and w the elevated weights. The product of
 // B^m_i and B^1_k is (m+1-i)/(m+1) B^{m+1}_i for k = 0 and (i+1)/(m+1) B^{m+1}_{i+1} for k = 1,
-// which also elevates N and w (NURBS Book eq. 5.36). E = sum c B / sum w B then has the
-// positive weights w_IJ and the control points c_IJ / w_IJ, so its range lies in their convex
-// hull (paper section 5.2 bounds the same difference by the unelevated net).
+// which also elevates N and w (degree elevation, NURBS Book section 5.5). E = sum c B / sum w B
+// then has the positive weights w_IJ and the control points c_IJ / w_IJ, so its range lies in their
+// convex hull (paper section 5.2 bounds the same difference by the unelevated net).
 BezierPatch differencePatch(const BezierPatch& patch, const Point3 (&corner)[2][2]) {
     const int m = patch.degreeU(), n = patch.degreeV();
     BezierPatch difference(m + 1, n + 1);

@@ -19,8 +19,9 @@ namespace nurbslod {
 // a rational Bezier patch with positive weights, so its range lies in the convex hull of its
 // projected control points, and the first bracket is at most the largest distance between two
 // of them (`spread`), or between one of them and one on the cell's border when the corners p_k
-// lie on the cell's sides (`spreadToEdges`). The paper bounds it by twice the largest distance
-// from the bilinear patch, which is about twice too much where E bulges to one side.
+// lie on the cell's sides (`spreadToEdges`). Bounding it by the largest |E| inside plus the
+// largest |E| on the sides (or twice the largest inside) is about twice too much where E
+// bulges to one side, as on a cylinder or a sphere.
 struct CellErrorBound {
     // Bound on |S - B| over the cell, B the bilinear interpolant of the corners.
     double interior = 0;
@@ -46,9 +47,10 @@ struct CellErrorBound {
 
 // Conservative (mode Guaranteed): from the control net of E = (N - w B) / w written in the
 // degree-elevated Bernstein basis, where the weights are the elevated weights; when the bound
-// for `trimmedCell` is above `target`, E is subdivided at its middle (de Casteljau) and the
-// bound taken over the pieces' control points, which converges to E's true range, unless a
-// surface point already shows that no subdivision can bring it under `target`.
+// for `trimmedCell` is above `target` but within twice of it, E is subdivided at its middle
+// (de Casteljau) and the bound taken over the pieces' control points, which converges to E's
+// true range, unless a surface point already shows that no subdivision can bring it under
+// `target`.
 // Approximate: the control points replaced by surface points at the control points' parameters
 // (paper section 5.2); `target` is not used.
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
