@@ -22,7 +22,6 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <numbers>
 
 SO_NODE_SOURCE(SoNurbsLODShape);
 
@@ -57,7 +56,7 @@ SoNurbsLODShape::SoNurbsLODShape() {
     SO_NODE_CONSTRUCTOR(SoNurbsLODShape);
     SO_NODE_ADD_FIELD(pixelError, (0.5f));
     SO_NODE_ADD_FIELD(frameBudget, (20.0f));
-    SO_NODE_ADD_FIELD(normalError, (0.0f));  // off, as NurbsLODGui's default
+    SO_NODE_ADD_FIELD(normalError, (1.0f));  // degrees, as NurbsLODGui's default
     SO_NODE_ADD_FIELD(hiddenFaces, (0));
     hiddenFaces.setNum(0);
     redrawSensor_ = new SoTimerSensor(&SoNurbsLODShape::redrawCheck, this);
@@ -147,8 +146,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     const double allowedPixels =
         pixelError.getValue() > 0 ? static_cast<double>(pixelError.getValue()) : 0.5;
     const double normalDegrees = normalError.getValue();
-    const double normalRadians =
-        normalDegrees > 0 && normalDegrees < 90 ? normalDegrees * std::numbers::pi / 180.0 : 0.0;
+    const double normalBoundDeg = normalDegrees > 0 && normalDegrees < 90 ? normalDegrees : 0.0;
 
     cache_->collectFinished();
     const int faceCount = cache_->faceCount();
@@ -168,6 +166,7 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
     nurbslod::gui::FrameStats frame;
     frame.frames = stats_.frames + 1;
     frame.faceTriangles.assign(static_cast<std::size_t>(faceCount), 0);
+    frame.faceNormalErrorDeg.assign(static_cast<std::size_t>(faceCount), 0.0);
     for (int f = 0; f < faceCount; ++f) {
         int level = -1;
         const FaceLod* coarsest = cache_->bestCached(f, 0, &level);
@@ -182,15 +181,11 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
         }
         pixelSize[static_cast<std::size_t>(f)] = pixel;
         // Both bounds hold at the finer of the two levels: the screen-space error (section
-        // 4.1 of out-of-core-lod) and the face's shading tolerance (appearance, 4.1).
+        // 4.1 of out-of-core-lod) and the normal error (appearance, 4.1), measured on the
+        // levels made so far.
         const double screen = allowedPixels * pixel;
-        const double shading = cache_->shadingTolerance(f, normalRadians);
-        // (Refining further where a drawn level measures more than the bound does not help:
-        // what exceeds it are triangles next to poles and trimming loops, whose vertices sit
-        // on edge chords off the surface, and the kd-tree's thin fans, at every level.)
         const int screenLevel = cache_->levelFor(screen);
-        const int shadingLevel = std::isfinite(shading) ? cache_->levelFor(shading) : 0;
-        const int wanted = std::max(screenLevel, shadingLevel);
+        const int wanted = cache_->normalErrorLevel(f, normalBoundDeg, screenLevel);
         if (wanted > screenLevel) ++frame.facesShadingLimited;
         wantedLevel[static_cast<std::size_t>(f)] = wanted;
         if (!cache_->hasLevel(f, wanted)) {
@@ -238,7 +233,14 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             shownLevel_[static_cast<std::size_t>(f)] = -1;
             continue;
         }
-        const int wanted = wantedLevel[static_cast<std::size_t>(f)];
+        int wanted = wantedLevel[static_cast<std::size_t>(f)];
+        // A level that arrived in this frame may measure over the normal bound: ask for the
+        // finer one it predicts now, so the frame does not count as settled.
+        const int finer = cache_->normalErrorLevel(f, normalBoundDeg, wanted);
+        if (finer > wanted) {
+            wanted = finer;
+            cache_->request(f, wanted);
+        }
         int level = -1;
         const FaceLod* lod = cache_->bestCached(f, wanted, &level);
         if (!lod) continue;
@@ -248,9 +250,8 @@ void SoNurbsLODShape::render(SoGLRenderAction* action) {
             pixel > 0 ? lod->tolerance / pixel : std::numeric_limits<double>::infinity();
         frame.maxScreenErrorPx = std::max(frame.maxScreenErrorPx, errorPx);
         frame.maxNormalErrorDeg = std::max(frame.maxNormalErrorDeg, lod->maxNormalErrorDeg);
-        frame.maxNormalErrorInteriorDeg =
-            std::max(frame.maxNormalErrorInteriorDeg, lod->maxNormalErrorInteriorDeg);
-        if (normalRadians > 0 && lod->maxNormalErrorDeg > normalDegrees)
+        frame.faceNormalErrorDeg[static_cast<std::size_t>(f)] = lod->maxNormalErrorDeg;
+        if (normalBoundDeg > 0 && lod->maxNormalErrorDeg > normalBoundDeg)
             ++frame.facesNormalErrorOver;
         frame.triangles += lod->triangleCount();
         frame.faceTriangles[static_cast<std::size_t>(f)] = lod->triangleCount();

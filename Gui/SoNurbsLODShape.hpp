@@ -20,10 +20,9 @@ namespace nurbslod::gui {
 struct FrameStats {
     std::size_t triangles = 0;
     double maxScreenErrorPx = 0;  // of the drawn levels, over the visible faces
-    // Measured on the drawn levels, over the visible faces: the largest angle between a
-    // triangle's facet normal and the exact normals at its corners (FaceLod).
+    // Measured on the drawn levels, over the visible faces: the largest angle between the
+    // normal interpolated across a triangle and the exact normal there (FaceLod).
     double maxNormalErrorDeg = 0;
-    double maxNormalErrorInteriorDeg = 0;   // the same over triangles with corners on the surface
     double lastFrameTessellationMs = 0;     // time the frame spent on LOD work (selection, waiting)
     double lastFrameTessellationCpuMs = 0;  // the same in CPU time of the rendering thread
     double selectionMs = 0;                 // of which choosing levels and culling
@@ -32,14 +31,14 @@ struct FrameStats {
     int facesFailed = 0;
     int facesWaiting = 0;  // visible faces drawn coarser than wanted, a finer level pending
     // Visible faces whose wanted level the normal error bound made finer than the screen-space
-    // error alone would, and drawn faces whose measured normal error (all triangles) exceeds
-    // the bound.
+    // error alone would, and drawn faces whose measured normal error exceeds the bound.
     int facesShadingLimited = 0;
     int facesNormalErrorOver = 0;
     int pendingJobs = 0;
     double workerMs = 0;  // all background tessellation so far, summed over threads
     long long frames = 0;
     std::vector<std::size_t> faceTriangles;  // per face, drawn in the last frame (0: not drawn)
+    std::vector<double> faceNormalErrorDeg;  // per face, measured on the drawn level (0: not drawn)
 };
 
 }  // namespace nurbslod::gui
@@ -72,9 +71,10 @@ public:
 
     SoSFFloat pixelError;   // allowed screen-space error in pixels (0.5)
     SoSFFloat frameBudget;  // milliseconds a frame may spend on LOD work (20)
-    // Largest angle in degrees between the drawn and the exact normals (paper appearance,
-    // section 4.1): each face's level is also within its shading tolerance (ShadingTolerance).
-    // 0 (or anything outside (0, 90)) turns the bound off. Default 1.
+    // Largest angle in degrees between the drawn (interpolated) and the exact normals (paper
+    // appearance, section 4.1): each face's level is also one whose measured normal error is
+    // within it (FaceLodCache::normalErrorLevel). 0 (or anything outside (0, 90)) turns the
+    // bound off. Default 1.
     SoSFFloat normalError;
     // 1-based faces this node does not draw: the selected and pre-selected ones, which
     // FreeCAD's face set draws highlighted (both drawn would fight in the depth buffer).

@@ -25,11 +25,10 @@ PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
 # arguments override them.
 DEFAULT_PIXEL_ERROR = 0.5
 DEFAULT_FRAME_BUDGET_MS = 20.0
-# Largest angle between the drawn and the exact normals (appearance-preserving tessellation,
-# paper appearance section 4.1); 0 turns the bound off. Off by default: at 1 degree the sample
-# model needs about 100 times the triangles (2 M) and trj7 does not settle within a minute,
-# while the drawn normals are the exact ones at every vertex anyway.
-DEFAULT_NORMAL_ERROR_DEG = 0.0
+# Largest angle between the drawn normals (the exact ones at the vertices, interpolated across
+# each triangle) and the exact normals (appearance-preserving tessellation, paper appearance
+# section 4.1); 0 turns the bound off.
+DEFAULT_NORMAL_ERROR_DEG = 1.0
 
 try:
     from NurbsLODOverlays import set_overlay  # noqa: F401 (re-exported)
@@ -231,7 +230,7 @@ def enable_adaptive_display(
     its normals within normal_error_deg degrees of the exact ones (0: no normal bound).
 
     pixel_error, frame_budget_ms and normal_error_deg default to the preferences (0.5 px,
-    20 ms, off). With wait
+    20 ms, 1 degree). With wait
     (the default) the model is imported here and the summary of the import is returned:
     {faces, faces_failed: [{face, reason}], seconds}. With wait=False the import runs in a
     thread while FreeCAD keeps drawing the object, the swap happens when it is done (see
@@ -428,12 +427,12 @@ def _display_of(obj):
 
 def stats(obj):
     """What obj's last frame drew: triangles, max_screen_error_px, max_normal_error_deg
-    (measured on the drawn triangles: the largest angle between a facet normal and the exact
-    normals at its corners), max_normal_error_interior_deg (the same away from the trimming
-    loops and edge chords), faces_shading_limited (faces the normal bound made finer),
-    normal_error_deg (the bound), last_frame_tessellation_ms, faces_visible, faces_culled,
-    faces_failed, faces_waiting (drawn coarser than wanted while a worker makes the finer
-    level), pending_jobs, background_tessellation_ms, frames."""
+    (measured on the drawn triangles: the largest angle between the normal interpolated across
+    a triangle and the exact normal there), face_normal_error_deg (the same per face, 0: not
+    drawn), faces_shading_limited (faces the normal bound made finer), faces_normal_error_over
+    (drawn faces over the bound), normal_error_deg (the bound), last_frame_tessellation_ms,
+    faces_visible, faces_culled, faces_failed, faces_waiting (drawn coarser than wanted while a
+    worker makes the finer level), pending_jobs, background_tessellation_ms, frames."""
     _, NurbsLODCoin = _coin()
     return NurbsLODCoin.stats(_display_of(obj).node)
 

@@ -9,6 +9,7 @@ undoable transaction ("Edit control points"), cancel() (Escape) puts everything 
 import FreeCAD
 
 import NurbsLODGui
+import NurbsLODOverlays
 
 COMMAND_NAME = "NurbsLOD_EditPoles"
 # How close (pixels) a click must be to a pole to grab it.
@@ -125,8 +126,31 @@ class PoleEditor:
         self.moved.add((i, j))
         index = (i - 1) * columns + (j - 1)
         self.coordinates.point.set1Value(index, position.x, position.y, position.z)
+        self._follow_overlay(timing)
         self.timings.append(timing)
         return timing
+
+    def _edited_face(self):
+        """The face with the moved poles, in the shape's own coordinates, and the face it
+        replaces."""
+        shape = NurbsLODGui.local_shape(self.obj)
+        face = shape.Faces[self.face_index - 1]
+        surface = face.Surface.copy()
+        for i, j in sorted(self.moved):
+            surface.setPole(i, j, self.poles[i - 1][j - 1])
+        return shape, face, NurbsLODGui._face_on_surface(face, surface)
+
+    def _follow_overlay(self, timing):
+        """An analysis overlay the object shows follows the live face; its cost goes into
+        timing["overlay_ms"]. A face the overlay cannot analyse keeps the old stripes."""
+        if NurbsLODOverlays.overlay_of(self.obj) is None:
+            return
+        try:
+            timing["overlay_ms"] = NurbsLODOverlays.follow_face(
+                self.obj, self.face_index, self._edited_face()[2]
+            )
+        except Exception as error:
+            FreeCAD.Console.PrintWarning("{}\n".format(error))
 
     def grab(self, i, j):
         """Puts a dragger on pole (i, j); dragging it moves the pole live."""
@@ -173,12 +197,7 @@ class PoleEditor:
         self._close()
         if not self.moved:
             return False
-        shape = NurbsLODGui.local_shape(self.obj)
-        face = shape.Faces[self.face_index - 1]
-        surface = face.Surface.copy()
-        for i, j in sorted(self.moved):
-            surface.setPole(i, j, self.poles[i - 1][j - 1])
-        new_face = NurbsLODGui._face_on_surface(face, surface)
+        shape, face, new_face = self._edited_face()
         new_shape = new_face if len(shape.Faces) == 1 and shape.ShapeType == "Face" else (
             shape.replaceShape([(face, new_face)])
         )
@@ -203,6 +222,7 @@ class PoleEditor:
             pole = self.original[i - 1][j - 1]
             NurbsLODCoin.move_pole(node, self.face_index, i, j, (pole.x, pole.y, pole.z), 0)
         self.moved.clear()
+        NurbsLODOverlays.refresh_overlay(self.obj)  # the document's face again
 
     def _close(self):
         self.release()

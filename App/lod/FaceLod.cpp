@@ -6,7 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
-#include "lod/FacetNormalError.hpp"
+#include "lod/CollapsedCornerNormals.hpp"
+#include "lod/InterpolatedNormalError.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod::gui {
@@ -47,13 +48,11 @@ namespace {
 
 // The tessellator's mesh indexes positions and normals separately (a crease keeps two
 // normals); client arrays want one index per vertex: one vertex per (position, normal) pair.
-std::shared_ptr<FaceLod> toFaceLod(const Mesh& mesh, double tolerance,
-                                   const BSplineSurface& surface) {
+std::shared_ptr<FaceLod> toFaceLod(Mesh& mesh, double tolerance, const TrimmedSurface& face) {
     auto lod = std::make_shared<FaceLod>();
     lod->tolerance = tolerance;
-    const FacetNormalError normalError = measureFacetNormalError(mesh, surface, tolerance);
-    lod->maxNormalErrorDeg = normalError.maxDeg;
-    lod->maxNormalErrorInteriorDeg = normalError.interiorMaxDeg;
+    takeCollapsedCornerNormalsInside(mesh, face);
+    lod->maxNormalErrorDeg = measureInterpolatedNormalError(mesh, face).maxDeg;
     std::unordered_map<std::uint64_t, std::uint32_t> vertexOfPair;
     std::fill(lod->boxMin, lod->boxMin + 3, std::numeric_limits<float>::max());
     std::fill(lod->boxMax, lod->boxMax + 3, std::numeric_limits<float>::lowest());
@@ -108,13 +107,13 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         TessellationOptions options;
         options.tolerance = tolerance;
         options.mode = ErrorMode::Guaranteed;  // the screen-space error is a bound, not a guess
-        const TessellationResult tessellation = tessellateModel(single, options);
+        TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;
         } else if (tessellation.mesh.triangles.empty()) {
             result.failure = "no triangles";
         } else {
-            result.lod = toFaceLod(tessellation.mesh, tolerance, single.faces.front().surface);
+            result.lod = toFaceLod(tessellation.mesh, tolerance, single.faces.front());
         }
     } catch (const Standard_Failure& failure) {
         result.failure = std::string("OpenCASCADE failed: ") + failure.GetMessageString();

@@ -15,11 +15,9 @@ namespace nurbslod::gui {
 // made, so a frame can draw it while a worker thread makes the next one.
 struct FaceLod {
     double tolerance = 0;  // guaranteed distance to the surface, model units
-    // Measured (measureFacetNormalError): the largest angle between a triangle's facet normal
-    // and the exact normals at its corners, over all triangles not thinner than `tolerance`
-    // and over those whose corners lie on the surface.
+    // Measured (measureInterpolatedNormalError): the largest angle between the normal the
+    // display interpolates across a triangle and the exact normal there, over every triangle.
     double maxNormalErrorDeg = 0;
-    double maxNormalErrorInteriorDeg = 0;
     std::vector<float> positions;        // x y z per vertex
     std::vector<float> normals;          // x y z per vertex, unit
     std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise

@@ -7,8 +7,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lod/ShadingTolerance.hpp"
-
 namespace nurbslod::gui {
 
 namespace {
@@ -18,19 +16,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 int workerThreads() {
     return std::max(1, tbb::info::default_concurrency() - 1);
-}
-
-// The face's maximum curvature, or 0 with the reason in *failure (the face is then not drawn:
-// its normal error could not be bounded).
-double curvatureOf(const TrimmedSurface& face, std::string* failure) {
-    try {
-        return maximumCurvature(face);
-    } catch (const std::exception& error) {
-        *failure = error.what();
-    } catch (...) {
-        *failure = "the curvature could not be evaluated";
-    }
-    return 0;
 }
 }  // namespace
 
@@ -52,8 +37,7 @@ FaceLodCache::FaceLodCache(std::shared_ptr<const Model> model)
             state.failure = result.failure;
             return;
         }
-        state.maximumCurvature = curvatureOf(model_->faces[f], &state.failure);
-        if (state.failure.empty()) state.levels[0] = std::move(result.lod);
+        state.levels[0] = std::move(result.lod);
     });
 }
 
@@ -85,8 +69,51 @@ int FaceLodCache::levelFor(double tolerance) const {
     return std::clamp(level, 0, finestLevel_);
 }
 
-double FaceLodCache::shadingTolerance(int face, double normalErrorRadians) const {
-    return gui::shadingTolerance(normalErrorRadians, faces_[face].maximumCurvature);
+namespace {
+// Over this many levels (a tolerance 64 times smaller) a face's normal error must at least halve,
+// or the face is refined no further. Its mesh can stay the same over a few levels (a kd-tree cell
+// that meets them all: 4 levels at 2.7 degrees on a face of trj7 before it halves), so fewer
+// levels would stop faces that then converge.
+constexpr int stagnantLevels = 6;
+// The most levels one step of the rule goes finer (8 times the triangles): where the error does
+// not follow the prediction, a few steps find out before the face costs many triangles.
+constexpr int largestStep = 3;
+}  // namespace
+
+int FaceLodCache::normalErrorLevel(int face, double normalErrorDeg, int fromLevel) const {
+    const FaceState& state = faces_[face];
+    fromLevel = std::clamp(fromLevel, 0, finestLevel_);
+    if (!(normalErrorDeg > 0) || !state.failure.empty() || state.levels.empty()) return fromLevel;
+    // Coarse to fine: the coarsest level from fromLevel on within the bound, the finest level
+    // coarser than that over the bound, and the coarsest level over the bound.
+    int meeting = -1;
+    int over = -1, firstOver = -1;
+    double overDeg = 0, firstOverDeg = 0;
+    for (const auto& [level, lod] : state.levels) {
+        if (lod->maxNormalErrorDeg <= normalErrorDeg) {
+            if (level >= fromLevel) {
+                meeting = level;
+                break;
+            }
+            continue;
+        }
+        if (firstOver < 0) firstOver = level, firstOverDeg = lod->maxNormalErrorDeg;
+        over = level, overDeg = lod->maxNormalErrorDeg;
+    }
+    if (over < 0) return std::max(fromLevel, meeting);
+    // a level that failed to tessellate caps the finest there is
+    const int finest = state.failedLevel >= 0
+                           ? std::max(0, std::min(finestLevel_, state.failedLevel - 1))
+                           : finestLevel_;
+    int wanted;
+    if (over - firstOver >= stagnantLevels && overDeg > 0.5 * firstOverDeg) {
+        wanted = over;  // not halving: finer levels would cost triangles, not error
+    } else {
+        const int step = static_cast<int>(std::ceil(std::log2(overDeg / normalErrorDeg)));
+        wanted = over + std::clamp(step, 1, largestStep);
+        if (meeting >= 0) wanted = std::min(meeting, wanted);
+    }
+    return std::clamp(wanted, fromLevel, std::max(fromLevel, finest));
 }
 
 const FaceLod* FaceLodCache::bestCached(int face, int wanted, int* level) const {
@@ -227,17 +254,12 @@ double FaceLodCache::installFace(int face, std::shared_ptr<Model> edited, int le
     FaceLodResult result = tessellateFaceLod(*edited, face, levelTolerance(level));
     if (!result.lod)
         throw std::runtime_error("face " + std::to_string(face + 1) + ": " + result.failure);
-    std::string curvatureFailure;
-    const double curvature = curvatureOf(edited->faces[face], &curvatureFailure);
-    if (!curvatureFailure.empty())
-        throw std::runtime_error("face " + std::to_string(face + 1) + ": " + curvatureFailure);
     model_ = std::move(edited);
     FaceState& state = faces_[face];
     ++state.generation;
     state.levels.clear();
     state.levels[level] = std::move(result.lod);
     state.failure.clear();
-    state.maximumCurvature = curvature;
     state.failedLevel = -1;
     if (state.pendingLevel >= 0) {
         state.pendingLevel = -1;  // its result will carry the old generation and be dropped

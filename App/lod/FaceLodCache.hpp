@@ -55,13 +55,19 @@ public:
     // The coarsest level whose tolerance is at most `tolerance` (finestLevel() at most).
     int levelFor(double tolerance) const;
 
-    // The largest absolute curvature of the face (maximumCurvature), sampled when the face got
-    // its coarsest level; 0 for a failed face.
-    double maximumCurvature(int face) const { return faces_[face].maximumCurvature; }
-    // The tolerance that keeps the face's normal error within normalErrorRadians
-    // (shadingTolerance with the face's maximum curvature): infinity when the bound is off
-    // (0) or the face is flat.
-    double shadingTolerance(int face, double normalErrorRadians) const;
+    // The level from fromLevel on that keeps the face's drawn normals within normalErrorDeg of
+    // the exact ones (paper appearance, section 4.1; InterpolatedNormalError), as far as its
+    // levels made so far tell: the coarsest one from fromLevel on measured within the bound,
+    // unless the finest level measured over the bound before it predicts a coarser one that is
+    // not made yet. The interpolated normal's error is second order in the triangles' size,
+    // i.e. proportional to the level's tolerance, so it halves per level: a level measured at
+    // e > bound predicts the bound met ceil(log2(e / bound)) levels finer (at most 3 levels a
+    // step). The level asked for is made, measured and the rule applied again, so the choice
+    // rests on measured levels, not on the prediction. A face whose error does not halve over
+    // 6 levels (64 times the tolerance) is refined no further: its error is not where the
+    // tessellator refines (stats count it over the bound). fromLevel when the bound is off
+    // (normalErrorDeg <= 0) or the face failed.
+    int normalErrorLevel(int face, double normalErrorDeg, int fromLevel) const;
 
     // The level to draw for a face that wants `wanted`: the coarsest cached level at least as
     // fine, else the finest cached one (coarser than wanted). Null for a failed face.
@@ -100,8 +106,7 @@ private:
         int pendingLevel = -1;
         int failedLevel = -1;  // the coarsest level that failed; finer ones are not tried
         std::string failure;   // level 0 failed: the face is not drawn
-        double maximumCurvature = 0;
-        int generation = 0;  // bumped by an edit: jobs of an older surface are dropped
+        int generation = 0;    // bumped by an edit: jobs of an older surface are dropped
     };
     struct Finished {
         int face, level, generation;

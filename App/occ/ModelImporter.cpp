@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Geom2dConvert.hxx>
@@ -13,14 +14,21 @@
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <Geom_Line.hxx>
+#include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
@@ -136,8 +144,36 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
 
 namespace {
 
+// True for a face whose surface becomes a B-spline of the same parameter (a B-spline or a
+// plane) and whose edges' curves do too (lines, B-splines, Beziers): neither its pcurves nor
+// the parameter its edges share with their other faces change in a conversion. A circle's
+// B-spline form has another parameter, and the faces of an edge must agree on its parameter.
+bool keepsParameterAsBSpline(const TopoDS_Face& face) {
+    TopLoc_Location location;
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
+    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface))
+        surface = trimmed->BasisSurface();
+    if (surface.IsNull() || !(surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) ||
+                              surface->IsKind(STANDARD_TYPE(Geom_Plane))))
+        return false;
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+        if (BRep_Tool::Degenerated(edge)) continue;
+        double first = 0, last = 0;
+        Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+        while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(curve))
+            curve = trimmed->BasisCurve();
+        if (curve.IsNull() || !(curve->IsKind(STANDARD_TYPE(Geom_Line)) ||
+                                curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
+                                curve->IsKind(STANDARD_TYPE(Geom_BezierCurve))))
+            return false;
+    }
+    return true;
+}
+
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                    const TopTools_IndexedMapOfShape& edges, std::vector<TopoDS_Edge>& curveEdges) {
+                    const TopTools_DataMapOfShapeInteger& edgeIndex,
+                    std::vector<TopoDS_Edge>& curveEdges) {
     TrimLoop loop;
     std::vector<TopoDS_Edge> ordered;
     for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
@@ -160,7 +196,7 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
         curve.pcurve = toCurve(pcurveAsBSpline(pcurve, first, last));
         curve.first = first;
         curve.last = last;
-        curve.edge = edges.FindIndex(edge) - 1;
+        curve.edge = edgeIndex.IsBound(edge) ? edgeIndex.Find(edge) : -1;
         curve.reversed = edge.Orientation() == TopAbs_REVERSED;
         curve.seam = BRep_Tool::IsClosed(edge, face);
         curve.degenerated = BRep_Tool::Degenerated(edge);
@@ -193,7 +229,7 @@ std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
 // pcurveAccuracy: a pcurve that strays farther than this from its edge's 3D curve is remade
 // from the 3D curve (see pcurveFromEdgeCurve).
 TrimmedSurface importFace(const TopoDS_Face& face, int index,
-                          const TopTools_IndexedMapOfShape& edges, double pcurveAccuracy) {
+                          const TopTools_DataMapOfShapeInteger& edgeIndex, double pcurveAccuracy) {
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
@@ -202,7 +238,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
         const TopoDS_Wire wire = TopoDS::Wire(it.Current());
         std::vector<TopoDS_Edge> loopEdges;
-        TrimLoop loop = importLoop(wire, face, edges, loopEdges);
+        TrimLoop loop = importLoop(wire, face, edgeIndex, loopEdges);
         loop.outer = wire.IsSame(outer);
         if (!loop.curves.empty()) {
             result.loops.push_back(std::move(loop));
@@ -252,29 +288,58 @@ Model importModel(const TopoDS_Shape& original) {
     // below any tolerance a user asks for, so that the mesh closes across them.
     const SewnShape sewn = sewFaces(original, kSewingTolerance * model.boundingBoxDiagonal);
 
-    // Convert the whole shape at once so that the converted faces still share their converted
-    // edges (and the edges' common parameter). If that fails, convert face by face.
-    std::optional<BRepBuilderAPI_NurbsConvert> converter;
-    TopoDS_Shape converted;
-    try {
-        converter.emplace(sewn.shape, Standard_False);
-        if (converter->IsDone()) converted = converter->Shape();
-    } catch (const Standard_Failure&) {
-        converted.Nullify();
-    }
-
+    // Faces on a B-spline surface or a plane are taken as they are: faceSurfaceAsBSpline
+    // gives them a B-spline surface of the same parameter, so their pcurves stay valid.
+    // BRepBuilderAPI_NurbsConvert would copy them and project every pcurve of theirs onto the
+    // copy again (ProjLib_ComputeApproxOnPolarSurface), which took most of the import time of
+    // B-spline models (about 60% of trj7's). The other faces (cylinders, cones, spheres, tori,
+    // revolutions, offsets) change parameter with their surface and are converted together, so
+    // that they share their converted edges; a converted edge keeps the index of the edge it
+    // came from, which is what the faces of an edge share.
     TopTools_IndexedMapOfShape edges, vertices;
-    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_EDGE, edges);
-    TopExp::MapShapes(converted.IsNull() ? sewn.shape : converted, TopAbs_VERTEX, vertices);
+    TopExp::MapShapes(sewn.shape, TopAbs_EDGE, edges);
+    TopExp::MapShapes(sewn.shape, TopAbs_VERTEX, vertices);
+    TopTools_DataMapOfShapeInteger edgeIndex;
+    for (int k = 1; k <= edges.Extent(); ++k) edgeIndex.Bind(edges(k), k - 1);
+
+    std::vector<bool> keeps(sewn.faces.size());
+    TopoDS_Compound toConvert;
+    BRep_Builder builder;
+    builder.MakeCompound(toConvert);
+    bool anyToConvert = false;
+    for (size_t k = 0; k < sewn.faces.size(); ++k) {
+        keeps[k] = keepsParameterAsBSpline(sewn.faces[k]);
+        if (!keeps[k]) builder.Add(toConvert, sewn.faces[k]), anyToConvert = true;
+    }
+    std::optional<BRepBuilderAPI_NurbsConvert> converter;
+    if (anyToConvert) {
+        try {
+            converter.emplace(toConvert, Standard_False);
+            if (!converter->IsDone()) converter.reset();
+        } catch (const Standard_Failure&) {
+            converter.reset();
+        }
+        if (converter) {
+            TopTools_IndexedMapOfShape convertedEdges;
+            TopExp::MapShapes(toConvert, TopAbs_EDGE, convertedEdges);
+            for (int k = 1; k <= convertedEdges.Extent(); ++k)
+                if (edgeIndex.IsBound(convertedEdges(k)))
+                    edgeIndex.Bind(converter->ModifiedShape(convertedEdges(k)),
+                                   edgeIndex.Find(convertedEdges(k)));
+        }
+    }
 
     model.faces.resize(originalFaces.Extent());
     for (int k = 1; k <= originalFaces.Extent(); ++k) {
         const TopoDS_Face originalFace = TopoDS::Face(originalFaces(k));
         try {
             TopoDS_Face face;
-            if (!converted.IsNull()) {
+            if (keeps[k - 1]) {
+                face = sewn.faces[k - 1];
+            } else if (converter) {
                 face = TopoDS::Face(converter->ModifiedShape(sewn.faces[k - 1]));
             } else {
+                // the faces together failed to convert: this one alone, its edges its own
                 BRepBuilderAPI_NurbsConvert single(sewn.faces[k - 1], Standard_False);
                 face = TopoDS::Face(single.Shape());
             }
@@ -282,7 +347,7 @@ Model importModel(const TopoDS_Shape& original) {
             // is the original face's
             face.Orientation(originalFace.Orientation());
             model.faces[k - 1] =
-                importFace(face, k, edges, kPcurveAccuracy * model.boundingBoxDiagonal);
+                importFace(face, k, edgeIndex, kPcurveAccuracy * model.boundingBoxDiagonal);
         } catch (const Standard_Failure& failure) {
             model.faces[k - 1].faceIndex = k;
             model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();

@@ -17,6 +17,9 @@ struct FaceMesh {
         Point3 position = Point3::Zero();  // for the face's own vertices
         Vector3 normal = Vector3::Zero();  // the face's exact normal at the vertex
         Point2 uv = Point2::Zero();        // where the vertex lies on the face's surface
+        // the position is the surface's at uv (a point of the face's own, not of an edge or of
+        // a chord across an open edge)
+        bool positionFromSurface = false;
     };
     std::vector<Vertex> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 
@@ -677,14 +678,17 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         }
     });
 
-    // positions and exact normals at every vertex (section 8)
-    const auto& surface = face_.surface;
+    // positions and exact normals at every vertex (section 8), in one pass that shares the
+    // basis functions of equal u and v values; a shared vertex keeps its edge's position (the
+    // surface point comes with its normal at no extra cost, and is dropped)
+    std::vector<Point3> positions(mesh.vertices.size());
+    std::vector<Vector3> normals(mesh.vertices.size());
+    PointSetEvaluator(face_.surface).evaluate(uvOfVertex, positions.data(), normals.data());
     for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const Point2& uv = uvOfVertex[i];
-        if (needsPosition[i]) mesh.vertices[i].position = surface.point(uv.x(), uv.y());
-        Vector3 normal = surface.normal(uv.x(), uv.y());
-        mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
-        mesh.vertices[i].uv = uv;
+        if (needsPosition[i]) mesh.vertices[i].position = positions[i];
+        mesh.vertices[i].positionFromSurface = needsPosition[i] != 0;
+        mesh.vertices[i].normal = face_.reversed ? Vector3(-normals[i]) : normals[i];
+        mesh.vertices[i].uv = uvOfVertex[i];
     }
     splitNeedles(mesh);
     if (face_.reversed)

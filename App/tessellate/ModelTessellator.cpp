@@ -380,6 +380,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // 5. second pass: cut and triangulate with the completed boundaries
     std::vector<FaceMesh> faceMeshes(faceCount);
+    std::vector<char> fanned(faceCount, 0);
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (tessellators[f]) {
             try {
@@ -393,6 +394,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // over its boundary (a face must never be missing).
         if (thinFace[f] || (failure[f].empty() && faceMeshes[f].triangles.empty())) {
             faceMeshes[f] = fanOverBoundary(model.faces[f], boundaryOf(f, 2), positions);
+            fanned[f] = 1;
             failure[f].clear();
             if (faceMeshes[f].triangles.empty())
                 failure[f] = "no triangles inside the trimming loops";
@@ -405,12 +407,21 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     Mesh& mesh = result.mesh;
     mesh.positions = std::move(positions);
     std::vector<char> used(mesh.positions.size(), 0);
+    if (options.keepFaceVertices) result.faceVertices.resize(faceCount);
     for (int f = 0; f < faceCount; ++f) {
         if (!failure[f].empty()) {
             result.failures.push_back({f + 1, failure[f]});
             continue;
         }
         const FaceMesh& fm = faceMeshes[f];
+        if (options.keepFaceVertices && !fanned[f]) {
+            FaceVertexSet& set = result.faceVertices[f];
+            set.firstNormal = static_cast<std::uint32_t>(mesh.normals.size());
+            for (const auto& v : fm.vertices) {
+                set.uv.push_back(v.uv);
+                set.needsPosition.push_back(v.positionFromSurface ? 1 : 0);
+            }
+        }
         std::vector<std::uint32_t> global(fm.vertices.size());
         const auto normalBase = static_cast<std::uint32_t>(mesh.normals.size());
         for (size_t i = 0; i < fm.vertices.size(); ++i) {

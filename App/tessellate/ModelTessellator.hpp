@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,24 @@ struct FaceFailure {
     std::string reason;
 };
 
+// The vertices a face's tessellator evaluated on the face's surface: (u, v) of each, and
+// whether its position came from the surface (the face's own points) or from a shared edge
+// (where only the normal was wanted).
+struct FaceVertexSet {
+    std::vector<Point2> uv;
+    std::vector<char> needsPosition;
+    // the index in mesh.normals and mesh.parameters of the first vertex; the others follow
+    std::uint32_t firstNormal = 0;
+};
+
 struct TessellationResult {
     Mesh mesh;
     int faces = 0;
     double seconds = 0;
     double tolerance = 0;
     std::vector<FaceFailure> failures;
+    // per face (index face - 1), filled when TessellationOptions::keepFaceVertices is set
+    std::vector<FaceVertexSet> faceVertices;
 };
 
 // Tessellates every face of the model within options.tolerance, sharing edge vertices between

@@ -14,6 +14,9 @@ struct TessellationOptions {
     double tolerance = 0;  // absolute, in model units; > 0
     ErrorMode mode = ErrorMode::Guaranteed;
     int threads = 0;  // 0: all cores
+    // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
+    // of the vertex evaluation.
+    bool keepFaceVertices = false;
     // Called from worker threads as faces finish: (faces done, faces in all).
     std::function<void(std::size_t, std::size_t)> progress;
 };

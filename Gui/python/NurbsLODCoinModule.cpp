@@ -115,7 +115,6 @@ py::dict stats(const py::object& node) {
     out["triangles"] = s.triangles;
     out["max_screen_error_px"] = s.maxScreenErrorPx;
     out["max_normal_error_deg"] = s.maxNormalErrorDeg;
-    out["max_normal_error_interior_deg"] = s.maxNormalErrorInteriorDeg;
     out["faces_shading_limited"] = s.facesShadingLimited;
     out["faces_normal_error_over"] = s.facesNormalErrorOver;
     out["last_frame_tessellation_ms"] = s.lastFrameTessellationMs;
@@ -129,6 +128,7 @@ py::dict stats(const py::object& node) {
     out["background_tessellation_ms"] = s.workerMs;
     out["frames"] = s.frames;
     out["face_triangles"] = s.faceTriangles;
+    out["face_normal_error_deg"] = s.faceNormalErrorDeg;
     out["pixel_error"] = shape->pixelError.getValue();
     out["frame_budget_ms"] = shape->frameBudget.getValue();
     out["normal_error_deg"] = shape->normalError.getValue();
@@ -275,10 +275,11 @@ PYBIND11_MODULE(NurbsLODCoin, m) {
           "[{face, reason}], seconds}.");
     m.def("stats", &stats, py::arg("node"),
           "What the node's last frame drew: triangles, max_screen_error_px, "
-          "max_normal_error_deg (measured), faces_shading_limited, last_frame_tessellation_ms, "
+          "max_normal_error_deg (measured, interpolated normals), faces_shading_limited, "
+          "faces_normal_error_over, last_frame_tessellation_ms, "
           "faces_visible, faces_culled, faces_failed, "
           "faces_waiting, pending_jobs, background_tessellation_ms, frames, face_triangles "
-          "(per face, 0: not drawn), failures.");
+          "(per face, 0: not drawn), face_normal_error_deg (per face), failures.");
     m.def("replace_face", &replaceFace, py::arg("node"), py::arg("face"), py::arg("brep"),
           py::arg("level") = 0,
           "Replaces face `face` (1-based) by the one face of `brep` and tessellates only it, at "

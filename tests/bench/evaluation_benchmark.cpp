@@ -9,6 +9,11 @@
 //   Tables 3, 4: mean angle between approximated and exact normals, torus and goblet.
 //   Table 1: angle between the approximated normals of two C1 / C2 adjacent surfaces on their
 //            shared edge.
+//   Beyond the paper: scattered vertices (random adaptive subdivisions), and the vertex sets
+//            the tessellator really evaluates on every corpus model at relative 1e-3 and 1e-4
+//            (PointSetEvaluator as FaceTessellator uses it, the former per-vertex calls,
+//            OpenCASCADE's D1), with the whole tessellation's time. --tessellator-vertices
+//            runs only that table.
 //
 // One core: times are the CPU time of the measuring thread, best of at least three runs (the
 // grid evaluator's threaded row, wall time, is printed as well). --quick: small grids only, seconds
@@ -44,8 +49,10 @@
 #include "geometry/EvaluationStudyModels.hpp"
 #include "geometry/GridEvaluator.hpp"
 #include "geometry/PointSetEvaluator.hpp"
+#include "geometry/SurfaceNormal.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
+#include "tessellate/ModelTessellator.hpp"
 
 using namespace nurbslod;
 
@@ -441,6 +448,29 @@ ScatteredResult scattered(const Benchmark& b, int depth, double budget) {
     return r;
 }
 
+// Beyond the paper: scattered vertices of adaptive subdivisions, every model, printed as a table.
+std::vector<ScatteredResult> scatteredTable(const std::vector<Benchmark>& benchmarks, bool quick,
+                                            double budget) {
+    std::printf(
+        "\nScattered vertices (corners of random adaptive subdivisions), points + exact "
+        "normals, one core\n");
+    std::printf("%-28s %9s | %22s %8s | %22s %8s | %18s %8s | %8s\n", "model", "vertices",
+                "BSplineSurface point+normal", "ns/vtx", "PointSetEvaluator", "ns/vtx",
+                "OCCT GeomAdaptor D1", "ns/vtx", "gain");
+    std::vector<ScatteredResult> results;
+    for (const auto& b : benchmarks) {
+        if (quick && b.name != "Utah teapot" && b.name != "Torus") continue;
+        const int depth = b.surfaces.size() > 100 ? 5 : b.surfaces.size() > 10 ? 6 : 9;
+        const auto r = scattered(b, depth, budget);
+        const double n = double(r.vertices);
+        std::printf("%-28s %9ld | %22.5f %8.1f | %22.5f %8.1f | %18.5f %8.1f | %7.1fx\n",
+                    r.model.c_str(), r.vertices, r.pointwise, r.pointwise * 1e9 / n, r.pointSet,
+                    r.pointSet * 1e9 / n, r.occt, r.occt * 1e9 / n, r.pointwise / r.pointSet);
+        results.push_back(r);
+    }
+    return results;
+}
+
 std::string jsonString(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
@@ -448,6 +478,205 @@ std::string jsonString(const std::string& s) {
         out += c;
     }
     return out + "\"";
+}
+
+// Beyond the paper: the vertex sets the tessellator really evaluates. Every corpus model is
+// tessellated (one thread) at a relative tolerance; each face's vertices (u, v) and whether the
+// face needs their position (its own points) or only their normal (edge points) are then
+// evaluated four ways: PointSetEvaluator as FaceTessellator does now (one evaluator per face,
+// its set-up included), the former per-vertex BSplineSurface::point + BSplineSurface::normal,
+// and OpenCASCADE's D1 (GeomAdaptor_Surface made per face, its BSplSLib cache included, and
+// Geom_BSplineSurface::D1), each for the whole model.
+struct TessellatorVertexResult {
+    std::string model;
+    double relative = 0;
+    int faces = 0;
+    long vertices = 0;     // face vertices: an edge point counts once per face that uses it
+    long ownVertices = 0;  // of them, those whose position comes from the surface
+    long distinctU = 0, distinctV = 0;  // summed over the faces
+    double tessellationSeconds = 0;     // the whole tessellation (one thread, wall)
+    double pointSet = 0, perVertex = 0, occtAdaptor = 0, occtSurface = 0;  // seconds
+    double maxNormalDeviation = 0;           // PointSetEvaluator against Geom_BSplineSurface::D1
+    double maxNormalDeviationPerVertex = 0;  // BSplineSurface::normal against the same
+    double maxPointDeviation = 0;            // the same for points, relative to the model's size
+};
+
+std::vector<TessellatorVertexResult> tessellatorVertexSets(const std::filesystem::path& corpus,
+                                                           double budget) {
+    std::vector<TessellatorVertexResult> results;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(corpus)) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& path : files) {
+        Model model;
+        try {
+            model = occ::importModel(occ::readShape(path.string()));
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s skipped: %s\n", path.filename().c_str(), e.what());
+            continue;
+        } catch (const Standard_Failure& e) {
+            std::fprintf(stderr, "%s skipped: %s\n", path.filename().c_str(), e.GetMessageString());
+            continue;
+        }
+        std::vector<Handle(Geom_BSplineSurface)> occt;
+        for (const auto& face : model.faces)
+            occt.push_back(face.surface.problem() ? Handle(Geom_BSplineSurface)()
+                                                  : testing::toOcctSurface(face.surface));
+        for (double relative : {1e-3, 1e-4}) {
+            std::fprintf(stderr, "tessellator vertices: %s at %g...\n", path.filename().c_str(),
+                         relative);
+            TessellationOptions options;
+            options.tolerance = relative * model.boundingBoxDiagonal;
+            options.threads = 1;
+            options.keepFaceVertices = true;
+            const TessellationResult tessellation = tessellateModel(model, options);
+            TessellatorVertexResult r;
+            r.model = path.filename().string();
+            r.relative = relative;
+            r.tessellationSeconds = tessellation.seconds;
+            const auto& sets = tessellation.faceVertices;
+            size_t largest = 0;
+            std::vector<int> faces;  // the faces the tessellator evaluated
+            for (size_t f = 0; f < sets.size(); ++f) {
+                if (sets[f].uv.empty() || occt[f].IsNull()) continue;
+                faces.push_back(static_cast<int>(f));
+                largest = std::max(largest, sets[f].uv.size());
+                r.vertices += static_cast<long>(sets[f].uv.size());
+                for (char own : sets[f].needsPosition) r.ownVertices += own;
+                std::set<double> us, vs;
+                for (const auto& uv : sets[f].uv) us.insert(uv.x()), vs.insert(uv.y());
+                r.distinctU += static_cast<long>(us.size());
+                r.distinctV += static_cast<long>(vs.size());
+            }
+            r.faces = static_cast<int>(faces.size());
+            if (faces.empty()) continue;
+            std::vector<Point3> points(largest);
+            std::vector<Vector3> normals(largest);
+            r.pointSet = bestSeconds(
+                [&] {
+                    for (int f : faces)
+                        PointSetEvaluator(model.faces[f].surface)
+                            .evaluate(sets[f].uv, points.data(), normals.data());
+                    gSink += points[0].x();
+                },
+                3, budget);
+            r.perVertex = bestSeconds(
+                [&] {
+                    for (int f : faces) {
+                        const BSplineSurface& s = model.faces[f].surface;
+                        const auto& set = sets[f];
+                        for (size_t k = 0; k < set.uv.size(); ++k) {
+                            if (set.needsPosition[k])
+                                points[k] = s.point(set.uv[k].x(), set.uv[k].y());
+                            normals[k] = s.normal(set.uv[k].x(), set.uv[k].y());
+                        }
+                    }
+                    gSink += points[0].x() + normals[0].x();
+                },
+                3, budget);
+            auto occtRun = [&](bool adaptor) {
+                return [&, adaptor] {
+                    for (int f : faces) {
+                        const auto& set = sets[f];
+                        GeomAdaptor_Surface cached;
+                        if (adaptor) cached.Load(occt[f]);
+                        for (size_t k = 0; k < set.uv.size(); ++k) {
+                            gp_Pnt p;
+                            gp_Vec du, dv;
+                            if (adaptor)
+                                cached.D1(set.uv[k].x(), set.uv[k].y(), p, du, dv);
+                            else
+                                occt[f]->D1(set.uv[k].x(), set.uv[k].y(), p, du, dv);
+                            gp_Vec n = du.Crossed(dv);
+                            const double m = n.Magnitude();
+                            if (m > 0) n /= m;
+                            points[k] = Point3(p.X(), p.Y(), p.Z());
+                            normals[k] = Vector3(n.X(), n.Y(), n.Z());
+                        }
+                    }
+                    gSink += points[0].x();
+                };
+            };
+            r.occtAdaptor = bestSeconds(occtRun(true), 3, budget);
+            r.occtSurface = bestSeconds(occtRun(false), 3, budget);
+            // the evaluator's results against OpenCASCADE's (where du x dv has a direction)
+            for (int f : faces) {
+                const auto& set = sets[f];
+                PointSetEvaluator(model.faces[f].surface)
+                    .evaluate(set.uv, points.data(), normals.data());
+                const BSplineSurface& s = model.faces[f].surface;
+                for (size_t k = 0; k < set.uv.size(); ++k) {
+                    // clamped as ours clamps; OpenCASCADE would extrapolate
+                    const double u =
+                        std::clamp(set.uv[k].x(), s.knotsU().first(), s.knotsU().last());
+                    const double v =
+                        std::clamp(set.uv[k].y(), s.knotsV().first(), s.knotsV().last());
+                    gp_Pnt p;
+                    gp_Vec du, dv;
+                    occt[f]->D1(u, v, p, du, dv);
+                    r.maxPointDeviation = std::max(
+                        r.maxPointDeviation, (points[k] - Point3(p.X(), p.Y(), p.Z())).norm() /
+                                                 model.boundingBoxDiagonal);
+                    // where du x dv has a direction (not at a pole, where ours looks inside)
+                    const Vector3 occtDu(du.X(), du.Y(), du.Z()), occtDv(dv.X(), dv.Y(), dv.Z());
+                    const Vector3 n = occtDu.cross(occtDv);
+                    if (!isReliableNormal(occtDu, occtDv, n)) continue;
+                    const Vector3 occtNormal = n.normalized();
+                    r.maxNormalDeviation =
+                        std::max(r.maxNormalDeviation, (normals[k] - occtNormal).norm());
+                    r.maxNormalDeviationPerVertex =
+                        std::max(r.maxNormalDeviationPerVertex,
+                                 (s.normal(set.uv[k].x(), set.uv[k].y()) - occtNormal).norm());
+                }
+            }
+            results.push_back(r);
+        }
+    }
+    return results;
+}
+
+void printTessellatorVertexSets(const std::vector<TessellatorVertexResult>& results) {
+    std::printf(
+        "\nThe tessellator's vertex sets (corpus, one core): points where the face needs them "
+        "+ exact normals, ns per vertex; gain = per-vertex / PointSetEvaluator\n");
+    std::printf("%-28s %6s %6s %8s %5s %6s | %9s %9s %9s %9s | %6s %6s | %9s %7s | %8s %8s %8s\n",
+                "model", "rel", "faces", "vertices", "own", "u/vtx", "PointSet", "pervertex",
+                "OCCT-ad", "OCCT-D1", "gain", "vsOCCT", "tess s", "eval %", "dP/diag", "dN",
+                "dN old");
+    for (const auto& r : results) {
+        const double n = double(r.vertices);
+        const double occtBest = std::min(r.occtAdaptor, r.occtSurface);
+        std::printf(
+            "%-28s %6.0e %6d %8ld %4.0f%% %6.2f | %9.1f %9.1f %9.1f %9.1f | %5.2fx %5.2fx | "
+            "%9.3f %6.2f%% | %8.1e %8.1e %8.1e\n",
+            r.model.c_str(), r.relative, r.faces, r.vertices, 100.0 * r.ownVertices / n,
+            r.distinctU / n, r.pointSet * 1e9 / n, r.perVertex * 1e9 / n, r.occtAdaptor * 1e9 / n,
+            r.occtSurface * 1e9 / n, r.perVertex / r.pointSet, occtBest / r.pointSet,
+            r.tessellationSeconds, 100.0 * r.pointSet / r.tessellationSeconds, r.maxPointDeviation,
+            r.maxNormalDeviation, r.maxNormalDeviationPerVertex);
+    }
+}
+
+void writeTessellatorVertexSets(std::ostream& j,
+                                const std::vector<TessellatorVertexResult>& results) {
+    j << "  \"tessellator_vertices\": [\n";
+    for (size_t k = 0; k < results.size(); ++k) {
+        const auto& r = results[k];
+        j << "    {\"model\": " << jsonString(r.model) << ", \"relative\": " << r.relative
+          << ", \"faces\": " << r.faces << ", \"vertices\": " << r.vertices
+          << ", \"own_vertices\": " << r.ownVertices << ", \"distinct_u\": " << r.distinctU
+          << ", \"distinct_v\": " << r.distinctV
+          << ", \"tessellation_seconds\": " << r.tessellationSeconds
+          << ", \"point_set_evaluator_seconds\": " << r.pointSet
+          << ", \"per_vertex_seconds\": " << r.perVertex
+          << ", \"occt_adaptor_seconds\": " << r.occtAdaptor
+          << ", \"occt_surface_d1_seconds\": " << r.occtSurface
+          << ", \"max_point_deviation_relative\": " << r.maxPointDeviation
+          << ", \"max_normal_deviation\": " << r.maxNormalDeviation
+          << ", \"max_normal_deviation_per_vertex\": " << r.maxNormalDeviationPerVertex << "}"
+          << (k + 1 < results.size() ? "," : "") << "\n";
+    }
+    j << "  ]";
 }
 
 }  // namespace
@@ -465,7 +694,31 @@ int main(int argc, char** argv) {
     app.add_option("--budget", budget, "seconds spent per measurement before taking the best")
         ->check(CLI::Range(0.0, 60.0));
     app.add_option("--corpus", corpus, "folder of models whose B-spline faces are benchmarked too");
+    bool tessellatorOnly = false, scatteredOnly = false;
+    app.add_flag("--tessellator-vertices", tessellatorOnly,
+                 "only the table of the tessellator's vertex sets (corpus models)");
+    app.add_flag("--scattered", scatteredOnly,
+                 "only the table of scattered vertices (adaptive subdivisions)");
     CLI11_PARSE(app, argc, argv);
+    if (tessellatorOnly) {
+        if (!std::filesystem::is_directory(corpus)) {
+            std::printf("corpus not found at %s: nothing to measure\n", corpus.c_str());
+            return 0;
+        }
+        const auto results = tessellatorVertexSets(corpus, budget);
+        printTessellatorVertexSets(results);
+        if (!jsonPath.empty()) {
+            std::ofstream out(jsonPath);
+            out << "{\n";
+            writeTessellatorVertexSets(out, results);
+            out << "\n}\n";
+            if (!out) {
+                std::fprintf(stderr, "cannot write %s\n", jsonPath.c_str());
+                return 1;
+            }
+        }
+        return gSink == 12345.678 ? 2 : 0;
+    }
     if (quick) budget = std::min(budget, 0.02);
 
     std::printf("evaluation benchmark: AVX2+FMA %s, %s mode, one core unless a row says so\n",
@@ -497,6 +750,10 @@ int main(int argc, char** argv) {
     if (!quick && std::filesystem::is_directory(corpus)) {
         benchmarks.push_back(corpusBenchmark(corpus));
         paperCounts.push_back(100000);
+    }
+    if (scatteredOnly) {
+        scatteredTable(benchmarks, quick, budget);
+        return gSink == 12345.678 ? 2 : 0;
     }
     std::vector<Row> rows;
     double occtBicubic = 0, bestBicubic = 0, occtDegree15 = 0, bestDegree15 = 0;
@@ -624,23 +881,11 @@ int main(int argc, char** argv) {
                     counts[k], c1[k].first, c1[k].second, c2[k].first, c2[k].second,
                     c1Linear[k].first, c1Linear[k].second, c2Linear[k].first, c2Linear[k].second);
 
-    // Beyond the paper: scattered vertices of adaptive subdivisions (what a tessellator has)
-    std::printf(
-        "\nScattered vertices (corners of random adaptive subdivisions), points + exact "
-        "normals, one core\n");
-    std::printf("%-28s %9s | %22s %8s | %22s %8s | %18s %8s | %8s\n", "model", "vertices",
-                "BSplineSurface point+normal", "ns/vtx", "PointSetEvaluator", "ns/vtx",
-                "OCCT GeomAdaptor D1", "ns/vtx", "gain");
-    std::vector<ScatteredResult> scatteredResults;
-    for (const auto& b : benchmarks) {
-        if (quick && b.name != "Utah teapot" && b.name != "Torus") continue;
-        const int depth = b.surfaces.size() > 100 ? 5 : b.surfaces.size() > 10 ? 6 : 9;
-        const auto r = scattered(b, depth, budget);
-        const double n = double(r.vertices);
-        std::printf("%-28s %9ld | %22.5f %8.1f | %22.5f %8.1f | %18.5f %8.1f | %7.1fx\n",
-                    r.model.c_str(), r.vertices, r.pointwise, r.pointwise * 1e9 / n, r.pointSet,
-                    r.pointSet * 1e9 / n, r.occt, r.occt * 1e9 / n, r.pointwise / r.pointSet);
-        scatteredResults.push_back(r);
+    const std::vector<ScatteredResult> scatteredResults = scatteredTable(benchmarks, quick, budget);
+    std::vector<TessellatorVertexResult> tessellatorResults;
+    if (!quick && std::filesystem::is_directory(corpus)) {
+        tessellatorResults = tessellatorVertexSets(corpus, budget);
+        printTessellatorVertexSets(tessellatorResults);
     }
 
     if (!jsonPath.empty()) {
@@ -699,7 +944,9 @@ int main(int argc, char** argv) {
               << ", \"occt_adaptor_seconds\": " << r.occt << "}"
               << (k + 1 < scatteredResults.size() ? "," : "") << "\n";
         }
-        j << "  ]\n}\n";
+        j << "  ],\n";
+        writeTessellatorVertexSets(j, tessellatorResults);
+        j << "\n}\n";
         std::ofstream out(jsonPath);
         out << j.str();
         if (!out) {

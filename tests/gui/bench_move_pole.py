@@ -9,7 +9,9 @@ times and prints a table, side by side in one run:
     frame at 60 Hz), and until the workers brought it back within half a pixel;
   - move_pole with adaptive display: the whole edit (new face, document transaction, FreeCAD
     re-meshing its face set, which stays for picking);
-  - move_pole with FreeCAD's own display: the same edits without the node.
+  - move_pole with FreeCAD's own display: the same edits without the node;
+  - the pole editor's live moves with zebra stripes on: the node, and the overlay following
+    (the edited face analysed again and spliced into the overlay's mesh).
 """
 
 import os
@@ -58,6 +60,28 @@ def _moves(obj, count, view=None):
     return times
 
 
+def _editor_moves_under_zebra(obj, view):
+    """Live moves in the pole editor with zebra stripes on (the document untouched, then
+    cancelled). Returns the node's and the overlay's milliseconds per move."""
+    import FreeCAD
+
+    import NurbsLODOverlays
+    import NurbsLODPoleEditor
+
+    NurbsLODOverlays.set_overlay(obj, "zebra")
+    editor = NurbsLODPoleEditor.PoleEditor(obj, 1, view)
+    node, overlay = [], []
+    for k in range(MOVES):
+        i, j = 3 + (k * 7) % 14, 3 + (k * 5) % 14
+        step = FreeCAD.Vector(0, 0, 2.0 if k % 2 else -2.0)
+        timing = editor.move(i, j, editor.pole(i, j) + step)
+        node.append(timing["total_ms"])
+        overlay.append(timing["overlay_ms"])
+    editor.cancel()
+    NurbsLODOverlays.set_overlay(obj, None)
+    return node, overlay
+
+
 def _row(name, values):
     return "| {:<58} | {:>9.2f} | {:>9.2f} | {:>9.2f} |".format(
         name, statistics.median(values), min(values), max(values))
@@ -88,6 +112,7 @@ def _run():
         level = NurbsLODCoin.shown_level(node, 1)
         on = _moves(obj, MOVES, view)
         stats_after, _, _ = gt.settle(view, obj)
+        editor_node, editor_overlay = _editor_moves_under_zebra(obj, view)
         NurbsLODGui.disable_adaptive_display(obj)
         off = _moves(obj, MOVES)
 
@@ -103,6 +128,8 @@ def _run():
         print(_row("move_pole, adaptive display (incl. FreeCAD's face set)", on["total"]))
         print(_row("move_pole until the node is back within 0.5 px", on["settled"]))
         print(_row("move_pole, FreeCAD's own display", off["total"]))
+        print(_row("pole editor live move, zebra on: node at level 0", editor_node))
+        print(_row("pole editor live move, zebra on: overlay follows", editor_overlay))
         print("ratio node / FreeCAD's own display (medians): {:.2f}".format(
             statistics.median(on["node"]) / statistics.median(off["total"])))
         print("settled after the moves: {:.3f} px, {} triangles".format(

@@ -33,7 +33,7 @@ class ZoomCase:
         document, obj, view = gt.open_model(self.model_path(), self.model_name)
         self.addCleanup(gt.close, document)
         # the screen-space error alone: the normal error bound has its own test
-        # (test_normal_error.py) and would make the fitted view 100 times heavier
+        # (test_normal_error.py)
         summary = NurbsLODGui.enable_adaptive_display(obj, normal_error_deg=0)
         self.assertEqual(summary["faces"], len(obj.Shape.Faces))
         # faces the tessellator cannot handle keep FreeCAD's own mesh, drawn beside the node

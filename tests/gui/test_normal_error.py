@@ -1,19 +1,12 @@
-"""Appearance-preserving tessellation in the real FreeCAD GUI (paper appearance, section 4.1):
-with a normal error bound, the drawn triangles' facet normals stay within the bound of the
-exact normals at their corners, measured on the drawn levels; without it the same view needs
-fewer triangles (the screen-space error alone leaves visible facets in the shading).
+"""Appearance-preserving display in the real FreeCAD GUI (paper appearance, section 4.1): with
+the normal error bound (1 degree, the default) every drawn face's normals, interpolated across
+its triangles as the viewer shades them, stay within the bound of the exact normals, measured
+on the drawn levels (max_normal_error_deg, face_normal_error_deg); without it the screen-space
+error alone leaves larger normal errors on the sample model.
 
-The bound is asserted over the interior triangles (max_normal_error_interior_deg: no corner
-on a trimming loop, every corner on the surface). Next to the loops the tessellator's
-triangles are shaped by the loop and its vertices sit on edge chords, off the surface; at a
-sphere's poles and seam that tilts the tiny triangles there by a few degrees at every level.
-That maximum over all triangles (max_normal_error_deg) is printed, not asserted.
-
-Measured here: the interior triangles reach 1.2 to 1.8 degrees at the blends' corners, whose
-pole the kd-tree fans with long thin triangles (the curvature rule assumes chords), and the
-figure moves with the tessellator's split of its error budget; finer levels do not bring it
-down. So the bound is NOT met: the assertion allows INTERIOR_SLACK over it, and checks that
-the bound cuts the interior error of the unbounded display at least threefold.
+The measure samples each triangle on a barycentric grid (InterpolatedNormalError); against a
+grid three times denser it reads up to 1.22 times low on the corpus, so "within the bound"
+means within it at those samples.
 """
 
 import math
@@ -26,49 +19,80 @@ import FreeCAD
 import gui_testing as gt
 import NurbsLODGui
 
-# What the interior triangles may exceed the bound by (see above): twice the bound.
-INTERIOR_SLACK = 2.0
+BOUND_DEG = 1.0
+# What the bound may cost over the screen-space error alone, in triangles, at the fitted view.
+COST_LIMIT = 3.0
 
 
-class NormalErrorBound(unittest.TestCase):
+class NormalErrorCase:
+    model_name = None
+    pixel_error = 0.5
+    # whether the screen-space error alone leaves more than the bound (the bound then has
+    # something to do in the fitted view)
+    unbounded_exceeds = True
+
+    def model_path(self):
+        raise NotImplementedError
+
     def setUp(self):
-        directory = tempfile.mkdtemp(prefix="nurbslod-gui-")
-        self.addCleanup(shutil.rmtree, directory, True)
-        self.document, self.obj, self.view = gt.open_model(gt.sample_model(directory), "normals")
+        self.document, self.obj, self.view = gt.open_model(self.model_path(), self.model_name)
         self.addCleanup(gt.close, self.document)
 
     def settled(self, normal_error_deg, name):
-        NurbsLODGui.enable_adaptive_display(self.obj, normal_error_deg=normal_error_deg)
+        NurbsLODGui.enable_adaptive_display(
+            self.obj, pixel_error=self.pixel_error, normal_error_deg=normal_error_deg)
         self.view.fitAll()
         stats, _, frames = gt.settle(self.view, self.obj)
         gt.screenshot(self.view, name)
+        faces = stats["face_normal_error_deg"]
+        worst = max(range(len(faces)), key=lambda k: faces[k])
         FreeCAD.Console.PrintMessage(
-            "NurbsLOD GUI test normal error {}: {} triangles, measured max normal error "
-            "{:.3f} deg ({:.3f} deg over interior triangles), {} faces made finer by the "
-            "bound, {} over it, {:.3f} px, {} frames, {:.0f} ms in workers\n".format(
-                normal_error_deg, stats["triangles"], stats["max_normal_error_deg"],
-                stats["max_normal_error_interior_deg"],
-                stats["faces_shading_limited"], stats["faces_normal_error_over"],
-                stats["max_screen_error_px"], frames, stats["background_tessellation_ms"]))
+            "NurbsLOD GUI test normal error {} {}: {} triangles, measured max normal error "
+            "{:.3f} deg (face {}), {} faces made finer by the bound, {} over it, {:.3f} px, "
+            "{} frames, {:.0f} ms in workers; triangles of the faces over it: {}\n".format(
+                self.model_name, normal_error_deg, stats["triangles"],
+                stats["max_normal_error_deg"], worst + 1, stats["faces_shading_limited"],
+                stats["faces_normal_error_over"], stats["max_screen_error_px"], frames,
+                stats["background_tessellation_ms"],
+                {k + 1: stats["face_triangles"][k] for k in range(len(faces))
+                 if stats["normal_error_deg"] > 0 and faces[k] > stats["normal_error_deg"]}))
         return stats
 
-    def test_one_degree_is_met_when_measured_and_costs_triangles(self):
-        off = self.settled(0, "normal-error-off")
-        on = self.settled(1.0, "normal-error-1deg")
+    def test_the_default_bound_is_met_on_every_face(self):
+        off = self.settled(0, "normal-error-{}-off".format(self.model_name))
+        NurbsLODGui.disable_adaptive_display(self.obj)
+        on = self.settled(None, "normal-error-{}-1deg".format(self.model_name))
         self.assertEqual(off["normal_error_deg"], 0)
-        self.assertEqual(on["normal_error_deg"], 1.0)
-        self.assertEqual(on["faces_visible"], len(self.obj.Shape.Faces))
-        self.assertLessEqual(on["max_normal_error_interior_deg"], 1.0 * INTERIOR_SLACK)
-        self.assertLessEqual(
-            on["max_normal_error_interior_deg"], off["max_normal_error_interior_deg"] / 3
-        )
-        self.assertGreater(on["faces_shading_limited"], 0)
-        self.assertLessEqual(on["max_screen_error_px"], 0.5)
-        # without the bound the screen-space error alone leaves larger normal errors, with
-        # fewer triangles
-        self.assertGreater(off["max_normal_error_interior_deg"], 1.0)
-        self.assertLess(off["triangles"], on["triangles"])
+        self.assertEqual(on["normal_error_deg"], BOUND_DEG)  # the default
+        drawn = [k for k, count in enumerate(on["face_triangles"]) if count > 0]
+        self.assertEqual(len(drawn), on["faces_visible"])
+        self.assertGreater(len(drawn), 0)
+        # the bound, on every drawn face
+        over = [k + 1 for k in drawn if on["face_normal_error_deg"][k] > BOUND_DEG]
+        self.assertEqual(over, [])
+        self.assertEqual(on["faces_normal_error_over"], 0)
+        self.assertLessEqual(on["max_normal_error_deg"], BOUND_DEG)
+        self.assertLessEqual(on["max_screen_error_px"], self.pixel_error)
         self.assertEqual(on["last_error"], "")
+        # what it costs
+        self.assertGreaterEqual(on["triangles"], off["triangles"])
+        self.assertLessEqual(on["triangles"], COST_LIMIT * off["triangles"])
+        if self.unbounded_exceeds:
+            self.assertGreater(off["max_normal_error_deg"], BOUND_DEG)
+            self.assertGreater(on["faces_shading_limited"], 0)
+
+
+class SampleModelNormalError(NormalErrorCase, unittest.TestCase):
+    model_name = "sample"
+    # At the default 0.5 px the screen-space error alone keeps the sample model within 1 degree
+    # in the fitted view (0.95 measured, 16,698 triangles with and without the bound): 2 px
+    # gives the bound work to do.
+    pixel_error = 2.0
+
+    def model_path(self):
+        directory = tempfile.mkdtemp(prefix="nurbslod-gui-")
+        self.addCleanup(shutil.rmtree, directory, True)
+        return gt.sample_model(directory)
 
     def test_the_preference_is_the_default_and_bad_bounds_are_refused(self):
         parameters = NurbsLODGui.parameters()
@@ -81,6 +105,13 @@ class NormalErrorBound(unittest.TestCase):
             with self.assertRaises(ValueError):
                 NurbsLODGui.enable_adaptive_display(self.obj, normal_error_deg=bad)
         self.assertFalse(NurbsLODGui.is_enabled(self.obj))
+
+
+class CorpusModelNormalError(NormalErrorCase, unittest.TestCase):
+    model_name = "trj7"
+
+    def model_path(self):
+        return gt.corpus_file("trj7_b1-ec-214.stp")
 
 
 if __name__ == "__main__":

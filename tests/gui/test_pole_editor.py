@@ -71,6 +71,27 @@ class PoleEditing(unittest.TestCase):
             NurbsLODGui.local_shape(self.obj).Faces[0].Surface.getPoles(), self.original_local)
         self.assertEqual(self.view.getSceneGraph().findChild(editor.root), -1)
 
+    def test_an_overlay_follows_live_moves_and_cancel(self):
+        import NurbsLODOverlays
+
+        NurbsLODOverlays.set_overlay(self.obj, "zebra", stripes=12)
+        self.addCleanup(NurbsLODOverlays.set_overlay, self.obj, None)
+        overlay = NurbsLODOverlays._overlays[NurbsLODOverlays._key(self.obj)]
+        top_before = float(overlay.analysis["points"][:, 2].max())
+        brep = self.obj.Shape.exportBrepToString()
+        editor = NurbsLODPoleEditor.PoleEditor(self.obj, 1, self.view)
+        timing = editor.move(10, 10, self.lifted(10, 10))
+        self.assertIn("overlay_ms", timing)
+        # the stripes' mesh is the moved face's, the document still the old one
+        self.assertGreater(float(overlay.analysis["points"][:, 2].max()), top_before + 5.0)
+        self.assertEqual(self.obj.Shape.exportBrepToString(), brep)
+        self.assertEqual(NurbsLODOverlays.overlay_of(self.obj), "zebra")
+        gt.draw(self.view)
+        gt.screenshot(self.view, "pole-editor-zebra-live")
+        editor.cancel()
+        overlay = NurbsLODOverlays._overlays[NurbsLODOverlays._key(self.obj)]
+        self.assertAlmostEqual(float(overlay.analysis["points"][:, 2].max()), top_before, delta=1e-9)
+
     def test_a_dragged_pole_moves_live(self):
         editor = NurbsLODPoleEditor.PoleEditor(self.obj, 1, self.view)
         self.addCleanup(editor.cancel)

@@ -110,3 +110,34 @@ class AnalysisMeshBadInput(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class OverlayFaceReplacement(unittest.TestCase):
+    """The pole editor's live overlay: one face of an analysis mesh replaced by the analysis
+    mesh of its new version, every other face's vertices and triangles kept as they were."""
+
+    def test_one_face_replaced_the_others_kept(self):
+        import NurbsLODOverlays
+
+        box = Part.makeBox(10, 20, 30)
+        analysis = NurbsLOD.analysis_mesh(box, relative=1e-3)
+        moved = box.Faces[2].copy()
+        moved.translate(FreeCAD.Vector(0, 0, 5))
+        replacement = NurbsLOD.analysis_mesh(moved, relative=1e-3)
+        result = NurbsLODOverlays._with_face_replaced(analysis, 3, replacement)
+
+        def face_triangles(mesh, face):
+            return mesh["points"][mesh["triangles"][mesh["face_ids"] == face]]
+
+        self.assertEqual(len(result["points"]), len(result["normals"]))
+        self.assertEqual(len(result["triangles"]), len(result["face_ids"]))
+        self.assertLess(int(result["triangles"].max()), len(result["points"]))
+        for face in range(1, 7):
+            with self.subTest(face=face):
+                expected = replacement if face == 3 else analysis
+                ids = 1 if face == 3 else face
+                np.testing.assert_array_equal(
+                    face_triangles(result, face), face_triangles(expected, ids))
+        # no vertex left over from the old face
+        used = np.unique(result["triangles"])
+        self.assertEqual(len(used), len(result["points"]))

@@ -50,6 +50,38 @@ TEST(PointSetEvaluator, MatchesBSplineSurfacePointByPoint) {
         }
 }
 
+// A face's vertex set: a few dozen pairs, a few sharing a u or a v value, the rest lone, on
+// surfaces of unequal degrees (the unrolled kernels of degrees 1 to 3 and the general loops
+// above, degree 17 past the unrolled basis functions too).
+TEST(PointSetEvaluator, SmallSetsOfEveryDegreePair) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> parameter(-0.1, 1.1);
+    for (auto [degreeU, degreeV] :
+         {std::pair{1, 1}, {2, 1}, {1, 3}, {3, 2}, {3, 3}, {4, 2}, {2, 6}, {17, 3}})
+        for (bool rational : {false, true}) {
+            const BSplineSurface surface =
+                testing::randomSurface(degreeU, degreeV, rational, random, 4, 5);
+            std::vector<Point2> uv;
+            for (int k = 0; k < 24; ++k) {
+                const double u = k % 4 == 1 ? uv.back().x() : parameter(random);
+                const double v = k % 4 == 2 ? uv.back().y() : parameter(random);
+                uv.emplace_back(u, v);
+            }
+            std::vector<Point3> points(uv.size());
+            std::vector<Vector3> normals(uv.size());
+            PointSetEvaluator(surface).evaluate(uv, points.data(), normals.data());
+            double scale = 1;
+            for (const auto& p : surface.poles())
+                scale = std::max(scale, (p.head<3>() / p[3]).norm());
+            for (size_t k = 0; k < uv.size(); ++k) {
+                EXPECT_LT((points[k] - surface.point(uv[k].x(), uv[k].y())).norm() / scale, 1e-12)
+                    << "degrees " << degreeU << " x " << degreeV;
+                EXPECT_LT((normals[k] - surface.normal(uv[k].x(), uv[k].y())).norm(), 1e-9)
+                    << "degrees " << degreeU << " x " << degreeV;
+            }
+        }
+}
+
 TEST(PointSetEvaluator, PoleNormalsAndBadInput) {
     BRepBuilderAPI_NurbsConvert converter(BRepPrimAPI_MakeSphere(1.5).Shape(), Standard_False);
     TopExp_Explorer it(converter.Shape(), TopAbs_FACE);
