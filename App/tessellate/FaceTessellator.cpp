@@ -251,16 +251,9 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 // Clipped to the cell grown by the margin, not to the cell: a child shares sides
                 // with its parent, and its margin beyond them must still be there to be covered.
                 node.region = clip(node.region, {r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, true);
-                double area = 0;
-                for (const auto& p : node.region) area += ClipperLib::Area(p);
-                // no more than the margin's ring: the region may miss the cell itself
-                const double ring = 2.0 * double((r.x1 - r.x0) + (r.y1 - r.y0)) + 4.0;
-                if (std::abs(area) <= ring) {
-                    area = 0;
-                    for (const auto& p : clip(node.region, r, true)) area += ClipperLib::Area(p);
-                }
-                if (!(std::abs(area) > 0))
-                    continue;  // outside the trimmed region: neither leaf nor parent
+                bool any = false;
+                for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
+                if (!any) continue;  // outside the trimmed region: neither leaf nor parent
             }
         }
         leaves_[node.index].full = node.full;
