@@ -248,9 +248,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 node.full = true;
                 node.region.clear();
             } else {
-                // Clipped to the cell grown by the margin, not to the cell: a child shares sides
-                // with its parent, and its margin beyond them must still be there to be covered.
-                node.region = clip(node.region, {r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, true);
+                node.region = clip(node.region, r, true);
                 bool any = false;
                 for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
                 if (!any) continue;  // outside the trimmed region: neither leaf nor parent
