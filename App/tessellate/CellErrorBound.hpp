@@ -7,6 +7,21 @@ namespace nurbslod {
 
 // How far a kd-tree cell's surface piece may be from the triangles made over it, and where to
 // split the cell if that is too far (paper section 5.2).
+//
+// Write S = B + E over the cell, B the bilinear interpolant of the four corners and E the rest.
+// A triangle over the cell has surface points S(p_k) as corners, so at a point (u, v) with
+// barycentric weights lambda_k the triangle is at sum lambda_k S(p_k), and
+//   S(u, v) - sum lambda_k S(p_k) = [E(u, v) - sum lambda_k E(p_k)]
+//                                 + [B(u, v) - sum lambda_k B(p_k)].
+// The second bracket is the linear interpolation error of a bilinear map over a triangle inside
+// the cell: at most |P00 - Pm0 - P0n + Pmn| / 4 (the paper's twist term, [Kah02]). The first is
+// the difference of a point of E's range and a convex combination of points of E's range; E is
+// a rational Bezier patch with positive weights, so its range lies in the convex hull of its
+// projected control points, and the first bracket is at most the largest distance between two
+// of them (`spread`), or between one of them and one on the cell's border when the corners p_k
+// lie on the cell's sides (`spreadToEdges`). Bounding it by the largest |E| inside plus the
+// largest |E| on the sides (or twice the largest inside) is about twice too much where E
+// bulges to one side, as on a cylinder or a sphere.
 struct CellErrorBound {
     // Bound on |S - B| over the cell, B the bilinear interpolant of the corners.
     double interior = 0;
@@ -15,21 +30,30 @@ struct CellErrorBound {
     // |P00 - Pm0 - P0n + Pmn| / 4: the most the two triangles (or any triangles inside the cell)
     // deviate from the bilinear patch (paper section 5.2, [Kah02]).
     double twist = 0;
+    // Bound on |E(x) - E(y)|, x anywhere in the cell, y on its sides (at most interior +
+    // boundary).
+    double spreadToEdges = 0;
+    // Bound on |E(x) - E(y)|, x and y anywhere in the cell (at most 2 interior).
+    double spread = 0;
     // Preferred split: direction (0 = u, 1 = v) and local position in (0, 1).
     int splitDirection = 0;
     double splitAt = 0.5;
 
     // Bound for triangles whose corners are cell corners or lie on the cell edges.
-    double untrimmed() const { return interior + boundary + twist; }
+    double untrimmed() const { return spreadToEdges + twist; }
     // Bound for triangles with corners anywhere in the cell (trimming points).
-    double trimmed() const { return 2 * interior + twist; }
+    double trimmed() const { return spread + twist; }
 };
 
-// Conservative (mode Guaranteed): from the control net. For rational patches the numerator
-// N - w B is written in the degree-elevated Bernstein basis and bounded by its largest
-// coefficient over the smallest weight, which is exact for weights of 1 and a true bound for
-// any positive weights. Approximate: the control points replaced by surface points at the
-// control points' parameters (paper section 5.2).
-CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode);
+// Conservative (mode Guaranteed): from the control net of E = (N - w B) / w written in the
+// degree-elevated Bernstein basis, where the weights are the elevated weights; when the bound
+// for `trimmedCell` is above `target` but within twice of it, E is subdivided at its middle
+// (de Casteljau) and the bound taken over the pieces' control points, which converges to E's
+// true range, unless a surface point already shows that no subdivision can bring it under
+// `target`.
+// Approximate: the control points replaced by surface points at the control points' parameters
+// (paper section 5.2); `target` is not used.
+CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
+                              bool trimmedCell = false);
 
 }  // namespace nurbslod

@@ -301,7 +301,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                                               local(high.x(), breaksU[su], breaksU[su + 1]),
                                               local(low.y(), breaksV[sv], breaksV[sv + 1]),
                                               local(high.y(), breaksV[sv], breaksV[sv + 1]));
-        const CellErrorBound bound = cellErrorBound(piece, mode_);
+        const CellErrorBound bound = cellErrorBound(piece, mode_, budget_.surface, !node.full);
         const double error = mode_ == ErrorMode::Approximate
                                  ? bound.interior + bound.twist
                                  : (node.full ? bound.untrimmed() : bound.trimmed());

@@ -75,9 +75,20 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
         const Point3 exact = curve.point(s0 + (s1 - s0) * t);
         result.residual = std::max(result.residual, (exact - bezierPoint(control, t)).norm());
     }
+    // The curve halves at t = 1/2 (de Casteljau) lie in the hulls of their own control points,
+    // which lie in the whole curve's hull: the distance to the chord is convex, so the largest
+    // over the halves' points bounds the curve too, and about halves the whole net's overshoot
+    // (a quadratic arc's middle point is twice as far as the arc, its halves' points are not).
+    std::vector<Point3> left(n + 1), right = control;
+    for (int level = 0; level <= n; ++level) {
+        left[level] = right[0];
+        for (int i = 0; i < n - level; ++i) right[i] = 0.5 * (right[i] + right[i + 1]);
+    }
     double hull = 0;
-    for (int i = 1; i < n; ++i)
-        hull = std::max(hull, distanceToSegment(control[i], control.front(), control.back()));
+    for (int i = 1; i <= n; ++i)
+        hull = std::max(hull, distanceToSegment(left[i], control.front(), control.back()));
+    for (int i = 0; i < n; ++i)
+        hull = std::max(hull, distanceToSegment(right[i], control.front(), control.back()));
     result.bound = hull + result.residual;
     return result;
 }

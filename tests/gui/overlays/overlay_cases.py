@@ -246,7 +246,10 @@ def test_stripes_come_from_exact_normals_not_facets(ctx):
     ctx.show_only("G2")
     obj = ctx.objects["G2"]
     images, triangles = {}, {}
-    for relative in (2e-4, 4e-3):
+    # fine and coarse 20 times apart: about 7000 and 400 triangles with the tighter guaranteed
+    # cell bound (2e-4 and 4e-3 gave as many before it)
+    fine, coarse = 1e-4, 2e-3
+    for relative in (fine, coarse):
         options = dict(count=36, direction=(1, -1, 0), relative=relative)
         triangles[relative] = NurbsLODOverlays.set_overlay(obj, "zebra", **options)["triangles"]
         path = ctx.shot("zebra_G2_relative_{:g}".format(relative))
@@ -274,16 +277,16 @@ def test_stripes_come_from_exact_normals_not_facets(ctx):
     NurbsLODOverlays.set_overlay(obj, None)
 
     def differing(image):
-        return float((np.abs(images[2e-4] - image).max(axis=2) > 0.5).mean())
+        return float((np.abs(images[fine] - image).max(axis=2) > 0.5).mean())
 
     print(
         "  zebra on G2 with {} triangles vs {}: {:.2%} of the pixels differ with exact "
         "normals, {:.2%} with facet normals".format(
-            triangles[4e-3], triangles[2e-4], differing(images[4e-3]), differing(facets)
+            triangles[coarse], triangles[fine], differing(images[coarse]), differing(facets)
         )
     )
-    assert triangles[4e-3] * 10 < triangles[2e-4], triangles
-    assert differing(images[4e-3]) < 0.03, "coarse and fine stripes differ too much"
+    assert triangles[coarse] * 10 < triangles[fine], triangles
+    assert differing(images[coarse]) < 0.03, "coarse and fine stripes differ too much"
     assert differing(facets) > 0.1, "the measure cannot tell facet normals from exact ones"
 
 
