@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "tessellate/CellErrorBound.hpp"
+#include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 
 namespace nurbslod {
@@ -571,7 +572,8 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
 }
 
 FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
-                                      const std::vector<Point3>& sharedPositions) {
+                                      const std::vector<Point3>& sharedPositions,
+                                      const std::vector<double>& sharedOffsets) {
     FaceMesh mesh;
     const Paths region = regionOf(loops);
 
@@ -677,6 +679,7 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normal) : normal;
         mesh.vertices[i].uv = uv;
     }
+    removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap);
     splitNeedles(mesh);
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
