@@ -122,7 +122,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // A degenerated edge (a pole) is discretised like any other: on a true pole its points
         // coincide and their triangles vanish; on a sloppy one (a "pole" row spread over the
         // edge tolerance) they follow the surface instead of collapsing onto one vertex.
-        poly.params = discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
+        // a free edge's every segment is an open edge of the mesh: as few as the bound allows
+        poly.params =
+            curves.size() == 1
+                ? discretizeEdgeByLongestChords(curves, budget.lineApproximation,
+                                                budget.lineSimplification)
+                : discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
         poly.uv.resize(curves.size());
         for (size_t k = 0; k < curves.size(); ++k)
             for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
