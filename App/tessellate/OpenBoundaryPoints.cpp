@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -95,6 +96,13 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     auto planar = [&](std::uint32_t i) {
         return Point2(across.dot(position(i)), along.dot(position(i)));
     };
+    // the old fan turns once about v (half a turn, v being on the chord), not round it again
+    double turn = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const Point2 a = planar(ring[i]) - planar(v), b = planar(ring[i + 1]) - planar(v);
+        turn += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    }
+    if (!(turn < 1.5 * std::numbers::pi)) return std::nullopt;
     double extent = 0;
     for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = 0; j < size; ++j)
