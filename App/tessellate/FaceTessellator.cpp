@@ -10,6 +10,7 @@
 
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
+#include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 
 namespace nurbslod {
@@ -572,7 +573,8 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
 }
 
 FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
-                                      const std::vector<Point3>& sharedPositions) {
+                                      const std::vector<Point3>& sharedPositions,
+                                      const std::vector<double>& sharedOffsets) {
     FaceMesh mesh;
     const Paths region = regionOf(loops);
 
@@ -681,6 +683,7 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normals[i]) : normals[i];
         mesh.vertices[i].uv = uvOfVertex[i];
     }
+    removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap);
     splitNeedles(mesh);
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);

@@ -36,8 +36,12 @@ public:
 
     // Throws std::runtime_error with the reason when the face cannot be tessellated.
     std::vector<BoundaryCrossing> findCrossings(const std::vector<BoundaryLoop>& loops);
+    // sharedOffsets: how far each shared position may be off this face's surface (the share
+    // budget it spends), so that the face's own points on open chords are dropped only where
+    // the rest of that budget allows.
     FaceMesh triangulate(const std::vector<BoundaryLoop>& loops,
-                         const std::vector<Point3>& sharedPositions);
+                         const std::vector<Point3>& sharedPositions,
+                         const std::vector<double>& sharedOffsets);
 
 private:
     struct Leaf;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -121,7 +122,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // A degenerated edge (a pole) is discretised like any other: on a true pole its points
         // coincide and their triangles vanish; on a sloppy one (a "pole" row spread over the
         // edge tolerance) they follow the surface instead of collapsing onto one vertex.
-        poly.params = discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
+        // a free edge's every segment is an open edge of the mesh: as few as the bound allows
+        poly.params =
+            curves.size() == 1
+                ? discretizeEdgeByLongestChords(curves, budget.lineApproximation,
+                                                budget.lineSimplification)
+                : discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
         poly.uv.resize(curves.size());
         for (size_t k = 0; k < curves.size(); ++k)
             for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
@@ -174,6 +180,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     });
     std::vector<Point3> positions;
+    // how far each shared position is from the faces' own points it stands for: the share
+    // budget it spends (0 for a point of one face)
+    std::vector<double> offsets;
+    auto farthest = [](const std::vector<Point3>& points, const Point3& from) {
+        double d = 0;
+        for (const auto& p : points) d = std::max(d, (p - from).norm());
+        return d;
+    };
     std::map<std::pair<int, int>, std::uint32_t> vertexOfBrepVertex;  // (vertex, face or -1)
     {
         // endpoint positions of every use, by B-rep vertex
@@ -194,6 +208,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             if (spread(all) <= budget.shareGap) {
                 vertexOfBrepVertex[{vertex, -1}] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(all));
+                offsets.push_back(farthest(all, positions.back()));
                 continue;
             }
             std::map<int, std::vector<Point3>> byFace;
@@ -201,6 +216,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (auto& [face, points] : byFace) {
                 vertexOfBrepVertex[{vertex, face}] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
+                offsets.push_back(farthest(points, positions.back()));
             }
         }
     }
@@ -208,6 +224,47 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (auto it = vertexOfBrepVertex.find({vertex, -1}); it != vertexOfBrepVertex.end())
             return it->second;
         return vertexOfBrepVertex.at({vertex, face});
+    };
+    // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
+    // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
+    // point near both surfaces then serves both faces. It is found by projecting onto each
+    // surface in turn and averaging the feet; each face takes its foot's (u, v), so the shared
+    // vertex is at most shareGap/2 off each surface (the share budget), and the face's boundary
+    // moves inside its surface by no more than the edge's own tolerance (how far the B-rep
+    // itself places the edge, which meshjudge and the verifier allow at a face's boundary).
+    struct CommonPoint {
+        Point3 point;
+        std::vector<Point2> uv;  // per use
+        double offset = 0;       // the largest distance to a foot
+    };
+    auto commonPoint = [&](std::size_t e, std::size_t k) -> std::optional<CommonPoint> {
+        const auto& poly = polylines[e];
+        const std::size_t useCount = uses[e].size();
+        std::vector<Point3> own(useCount);
+        for (std::size_t u = 0; u < useCount; ++u)
+            own[u] =
+                model.faces[uses[e][u].face].surface.point(poly.uv[u][k].x(), poly.uv[u][k].y());
+        // a point between the curves: no face's boundary moves farther than they are apart (a
+        // broken file may give an edge a tolerance of kilometres)
+        const double reach = std::min(model.edges[e].tolerance, spread(own) + budget.shareGap);
+        CommonPoint common{centroid(own), std::vector<Point2>(useCount)};
+        std::vector<Point3> feet(useCount);
+        for (int iteration = 0; iteration < 8; ++iteration) {
+            bool near = true;
+            common.offset = 0;
+            for (std::size_t u = 0; u < useCount; ++u) {
+                const SurfaceFoot foot = projectOntoSurface(model.faces[uses[e][u].face].surface,
+                                                            common.point, poly.uv[u][k]);
+                common.uv[u] = foot.uv;
+                feet[u] = foot.point;
+                common.offset = std::max(common.offset, (foot.point - common.point).norm());
+                near &= (foot.point - common.point).norm() <= 0.5 * budget.shareGap &&
+                        (foot.point - own[u]).norm() <= reach;
+            }
+            if (near) return common;
+            common.point = centroid(feet);
+        }
+        return std::nullopt;
     };
     for (size_t e = 0; e < model.edges.size(); ++e) {
         if (uses[e].empty()) continue;
@@ -231,11 +288,21 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             if (spread(points) <= budget.shareGap) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
+                offsets.push_back(farthest(points, positions.back()));
                 for (auto& v : poly.vertices) v[k] = id;
+            } else if (auto common = commonPoint(e, k)) {
+                const auto id = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(common->point);
+                offsets.push_back(common->offset);
+                for (size_t u = 0; u < uses[e].size(); ++u) {
+                    poly.vertices[u][k] = id;
+                    poly.uv[u][k] = common->uv[u];
+                }
             } else {
                 for (size_t u = 0; u < points.size(); ++u) {
                     poly.vertices[u][k] = static_cast<std::uint32_t>(positions.size());
                     positions.push_back(points[u]);
+                    offsets.push_back(0);
                 }
             }
         }
@@ -355,6 +422,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (size_t u = 1; u < useCount; ++u)
                 sharedEnds &= poly.vertices[u][k] == poly.vertices[0][k] &&
                               poly.vertices[u][k + 1] == poly.vertices[0][k + 1];
+            // A segment that no two faces share (a free edge, or a sloppy edge whose faces keep
+            // their own points) gains nothing from the cut: the face that found it makes its own
+            // point on the chord, which it may drop again (removeOpenBoundaryPoints).
+            if (useCount == 1 || !sharedEnds) continue;
             double lastLambda = -1;
             for (auto& [lambda, use, x, y] : list) {
                 if (lambda <= 0 || lambda >= 1) continue;
@@ -368,6 +439,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                         ins.vertices[u] = static_cast<std::uint32_t>(positions.size());
                         positions.push_back((1 - lambda) * positions[poly.vertices[u][k]] +
                                             lambda * positions[poly.vertices[u][k + 1]]);
+                        offsets.push_back(std::max(offsets[poly.vertices[u][k]],
+                                                   offsets[poly.vertices[u][k + 1]]));
                     }
                     poly.inserted[k].push_back(std::move(ins));
                     lastLambda = lambda;
@@ -384,7 +457,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (tessellators[f]) {
             try {
-                faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions);
+                faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions, offsets);
             } catch (const std::exception& e) {
                 failure[f] = e.what();
             }
@@ -420,6 +493,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (const auto& v : fm.vertices) {
                 set.uv.push_back(v.uv);
                 set.needsPosition.push_back(v.positionFromSurface ? 1 : 0);
+                set.positions.push_back(v.position);
             }
         }
         std::vector<std::uint32_t> global(fm.vertices.size());
@@ -445,9 +519,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     }
     // Drop positions no triangle uses (edges of failed faces) and weld points closer than
-    // 1e-4 of the tolerance: a cell side that cuts an edge next to one of its points leaves a
-    // sliver that is noise for the error but a degenerate triangle for whoever reads the mesh.
-    const double quantum = 1e-4 * options.tolerance;
+    // 1e-2 of the tolerance: a cell side that cuts an edge next to one of its points leaves a
+    // sliver that is noise for the error but a degenerate triangle for whoever reads the mesh,
+    // and two B-rep vertices a sloppy file puts that close (trj7_b1-ec-214.stp: 0.0008 apart,
+    // 0.002 T at relative 1e-3) leave a crack where one face ends at each. Moving a point by at
+    // most 1e-2 T moves its triangles by no more, within the budget's slack.
+    const double quantum = 1e-2 * options.tolerance;
     std::unordered_map<std::int64_t, std::uint32_t> cellOfPoint;
     auto cellKey = [&](const Point3& p, int dx, int dy, int dz) {
         const auto x = (static_cast<std::int64_t>(std::floor(p.x() / quantum)) + dx) & 0x1fffff;

@@ -21,6 +21,8 @@ struct FaceFailure {
 struct FaceVertexSet {
     std::vector<Point2> uv;
     std::vector<char> needsPosition;
+    // the face's own positions, before the mesh welds points closer than its weld distance
+    std::vector<Point3> positions;
     // the index in mesh.normals and mesh.parameters of the first vertex; the others follow
     std::uint32_t firstNormal = 0;
 };

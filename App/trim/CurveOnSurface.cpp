@@ -75,20 +75,33 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
         const Point3 exact = curve.point(s0 + (s1 - s0) * t);
         result.residual = std::max(result.residual, (exact - bezierPoint(control, t)).norm());
     }
-    // The curve halves at t = 1/2 (de Casteljau) lie in the hulls of their own control points,
-    // which lie in the whole curve's hull: the distance to the chord is convex, so the largest
-    // over the halves' points bounds the curve too, and about halves the whole net's overshoot
-    // (a quadratic arc's middle point is twice as far as the arc, its halves' points are not).
-    std::vector<Point3> left(n + 1), right = control;
-    for (int level = 0; level <= n; ++level) {
-        left[level] = right[0];
-        for (int i = 0; i < n - level; ++i) right[i] = 0.5 * (right[i] + right[i + 1]);
-    }
+    // The control net of the whole piece stands up to about twice as far from the chord as the
+    // curve does (a parabola's middle control point); split into quarters by de Casteljau, each
+    // quarter lies in the hull of its own net, which lies in the whole net's hull and hugs the
+    // curve 16 times closer. The distance to the chord is convex, so the largest over the
+    // quarters' points bounds the curve (for a parabola: its sagitta exactly).
     double hull = 0;
-    for (int i = 1; i <= n; ++i)
-        hull = std::max(hull, distanceToSegment(left[i], control.front(), control.back()));
-    for (int i = 0; i < n; ++i)
-        hull = std::max(hull, distanceToSegment(right[i], control.front(), control.back()));
+    const Point3 &chordStart = control.front(), chordEnd = control.back();
+    std::vector<Point3> rest = control;
+    for (int quarter = 0; quarter < 4; ++quarter) {
+        std::vector<Point3> piece;
+        if (quarter < 3) {
+            // split the rest at the parameter where the next quarter ends
+            const double t = 1.0 / (4 - quarter);
+            std::vector<Point3> work = rest, right(n + 1);
+            piece.resize(n + 1);
+            for (int level = 0; level <= n; ++level) {
+                piece[level] = work[0];
+                right[n - level] = work[n - level];
+                for (int i = 0; i < n - level; ++i) work[i] = (1 - t) * work[i] + t * work[i + 1];
+            }
+            rest = right;
+        } else {
+            piece = rest;
+        }
+        for (const Point3& p : piece)
+            hull = std::max(hull, distanceToSegment(p, chordStart, chordEnd));
+    }
     result.bound = hull + result.residual;
     return result;
 }

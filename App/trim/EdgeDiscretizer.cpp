@@ -1,6 +1,7 @@
 #include "trim/EdgeDiscretizer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "geometry/SegmentDistance.hpp"
@@ -25,6 +26,49 @@ bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, d
 }
 
 }  // namespace
+
+std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurface>& uses,
+                                                  double approximation, double simplification) {
+    const double bound = approximation + std::max(0.0, simplification);
+    const double shortest = std::ldexp(1.0, -kMaxDepth);
+    std::vector<double> params{0.0};
+    double start = 0, step = 1;
+    while (start < 1) {
+        const double left = 1 - start;
+        auto flat = [&](double length) {
+            return length <= shortest || params.size() >= kMaxPoints ||
+                   flatEnough(uses, start, length >= left ? 1.0 : start + length, bound);
+        };
+        double good = 0, bad = 0;  // a length that is flat, and one that is not (0: none known)
+        double trial = std::min(step, left);
+        while (true) {
+            if (flat(trial)) {
+                good = trial;
+                if (trial >= left) break;
+                trial = std::min(2 * trial, left);
+            } else {
+                bad = trial;
+                if (good > 0) break;
+                trial *= 0.5;
+            }
+        }
+        for (int i = 0; i < 6 && bad > 0 && good < left; ++i) {
+            const double middle = 0.5 * (good + bad);
+            if (flat(middle))
+                good = middle;
+            else
+                bad = middle;
+        }
+        if (good >= left) {
+            params.push_back(1.0);
+            break;
+        }
+        start += good;
+        params.push_back(start);
+        step = good;
+    }
+    return params;
+}
 
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
                                    double simplification) {

@@ -14,4 +14,13 @@ namespace nurbslod {
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
                                    double simplification);
 
+// The same bound (`approximation` + `simplification` from every face's curve) reached with the
+// longest chords it allows: from each point the chord is stretched (doubling, then bisection)
+// as far as the bound holds. Fewer points than midpoint subdivision and simplification, whose
+// chords stop anywhere between a quarter and all of the bound; but the chords are longer in
+// (u, v) too, and the kd-tree then cuts more cells along them, so it pays where the number of
+// boundary segments itself matters: a free edge, whose every segment is an open edge of the mesh.
+std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurface>& uses,
+                                                  double approximation, double simplification);
+
 }  // namespace nurbslod
