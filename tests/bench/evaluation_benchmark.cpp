@@ -140,6 +140,16 @@ struct Row {
 
 double gSink = 0;  // keeps the optimiser from dropping the peer's loops
 
+// OpenCASCADE's point and unit normal (du x dv, left as it is where it vanishes) from its D1.
+void occtPointAndNormal(const gp_Pnt& p, const gp_Vec& du, const gp_Vec& dv, Point3& point,
+                        Vector3& normal) {
+    gp_Vec n = du.Crossed(dv);
+    const double m = n.Magnitude();
+    if (m > 0) n /= m;
+    point = Point3(p.X(), p.Y(), p.Z());
+    normal = Vector3(n.X(), n.Y(), n.Z());
+}
+
 // OpenCASCADE on the same grids: D0 for points, D1 and the normalised cross product for
 // normals; `adaptor` uses GeomAdaptor_Surface, whose D0/D1 go through BSplSLib_Cache.
 void occtGrid(const GridJob& job, Mode mode, bool adaptor, std::vector<Point3>& points,
@@ -435,11 +445,7 @@ ScatteredResult scattered(const Benchmark& b, int depth, double budget) {
                     gp_Pnt p;
                     gp_Vec du, dv;
                     surface.D1(sets[s][k].x(), sets[s][k].y(), p, du, dv);
-                    gp_Vec n = du.Crossed(dv);
-                    const double m = n.Magnitude();
-                    if (m > 0) n /= m;
-                    points[k] = Point3(p.X(), p.Y(), p.Z());
-                    normals[k] = Vector3(n.X(), n.Y(), n.Z());
+                    occtPointAndNormal(p, du, dv, points[k], normals[k]);
                 }
             }
             gSink += points[0].x();
@@ -587,11 +593,7 @@ std::vector<TessellatorVertexResult> tessellatorVertexSets(const std::filesystem
                                 cached.D1(set.uv[k].x(), set.uv[k].y(), p, du, dv);
                             else
                                 occt[f]->D1(set.uv[k].x(), set.uv[k].y(), p, du, dv);
-                            gp_Vec n = du.Crossed(dv);
-                            const double m = n.Magnitude();
-                            if (m > 0) n /= m;
-                            points[k] = Point3(p.X(), p.Y(), p.Z());
-                            normals[k] = Vector3(n.X(), n.Y(), n.Z());
+                            occtPointAndNormal(p, du, dv, points[k], normals[k]);
                         }
                     }
                     gSink += points[0].x();

@@ -63,11 +63,15 @@ class AnalysisMeshOfBSplineFace(unittest.TestCase):
         surface = Part.BSplineSurface()
         surface.buildFromPolesMultsKnots(poles, [4, 4], [4, 4], [0.0, 1.0], [0.0, 1.0],
                                          False, False, 3, 3)
-        r = NurbsLOD.analysis_mesh(Part.Face(surface), relative=1e-3)
+        face = Part.Face(surface)
+        r = NurbsLOD.analysis_mesh(face, relative=1e-3)
+        edge_tolerance = max(max(e.Tolerance for e in face.Edges), 1e-9)
         for i in range(0, len(r["points"]), max(1, len(r["points"]) // 50)):
             u, v = r["parameters"][i]
             p = surface.value(u, v)
-            self.assertLess((p - FreeCAD.Vector(*r["points"][i])).Length, 1e-9)
+            # a point on the face's border lies on its edge's 3D curve, which may be off the
+            # surface by the edge's tolerance
+            self.assertLess((p - FreeCAD.Vector(*r["points"][i])).Length, edge_tolerance)
             # FreeCAD's own curvature (OpenCASCADE) at the same point, convex positive: the
             # face's normal here is du x dv, so the sign flips
             k_max, k_min = surface.curvature(u, v, "Max"), surface.curvature(u, v, "Min")

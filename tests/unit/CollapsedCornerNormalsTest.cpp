@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "SingleFaceMesh.hpp"
 #include "lod/CollapsedCornerNormals.hpp"
 #include "lod/FaceLod.hpp"
 #include "lod/InterpolatedNormalError.hpp"
@@ -21,14 +22,7 @@
 namespace nurbslod::gui {
 namespace {
 
-Mesh faceMesh(const Model& model, int face, double tolerance) {
-    TessellationOptions options;
-    options.tolerance = tolerance;
-    options.mode = ErrorMode::Guaranteed;
-    const TessellationResult result = tessellateModel(singleFaceModel(model, face), options);
-    if (!result.failures.empty()) throw std::runtime_error(result.failures.front().reason);
-    return result.mesh;
-}
+using testing::singleFaceMesh;
 
 // Per triangle, the measured error (degrees).
 std::vector<double> triangleErrors(const Mesh& mesh, const TrimmedSurface& face) {
@@ -45,7 +39,7 @@ TEST(CollapsedCornerNormals, NeverMakeATriangleWorseAtPolesAndTips) {
     const Model cone = occ::importModel(BRepPrimAPI_MakeCone(5.0, 0.0, 10.0).Shape());
     for (const Model* model : {&sphere, &cone}) {
         for (std::size_t f = 0; f < model->faces.size(); ++f) {
-            Mesh mesh = faceMesh(*model, static_cast<int>(f), 0.05);
+            Mesh mesh = singleFaceMesh(*model, static_cast<int>(f), 0.05);
             const std::vector<double> before = triangleErrors(mesh, model->faces[f]);
             const std::size_t normals = mesh.normals.size();
             const int changed = takeCollapsedCornerNormalsInside(mesh, model->faces[f]);
@@ -72,7 +66,7 @@ TEST(CollapsedCornerNormals, MendTheSloppyPoleOfCorpusTrj7) {
     for (int face : {173}) {
         for (int level : {5, 8}) {
             const double tolerance = 1e-2 * model.boundingBoxDiagonal * std::ldexp(1.0, -level);
-            Mesh mesh = faceMesh(model, face, tolerance);
+            Mesh mesh = singleFaceMesh(model, face, tolerance);
             const TrimmedSurface& surface = model.faces[static_cast<std::size_t>(face)];
             const double before = measureInterpolatedNormalError(mesh, surface).maxDeg;
             EXPECT_GT(before, 30.0) << "face " << face + 1 << " level " << level;

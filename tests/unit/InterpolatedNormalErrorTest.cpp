@@ -12,6 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "SingleFaceMesh.hpp"
 #include "lod/FaceLod.hpp"
 #include "lod/FaceLodCache.hpp"
 #include "lod/InterpolatedNormalError.hpp"
@@ -23,15 +24,7 @@ namespace {
 
 constexpr double degree = std::numbers::pi / 180.0;
 
-// The mesh of face `face` of the model within `tolerance`.
-Mesh faceMesh(const Model& model, int face, double tolerance) {
-    TessellationOptions options;
-    options.tolerance = tolerance;
-    options.mode = ErrorMode::Guaranteed;
-    const TessellationResult result = tessellateModel(singleFaceModel(model, face), options);
-    if (!result.failures.empty()) throw std::runtime_error(result.failures.front().reason);
-    return result.mesh;
-}
+using testing::singleFaceMesh;
 
 TEST(InterpolatedNormalError, IsTheAngleOfTheNormalisedInterpolationOfTheCornerNormals) {
     // A flat triangle on a plane whose first corner carries a normal tilted by 8 degrees: the
@@ -80,10 +73,11 @@ TEST(InterpolatedNormalError, IsSecondOrderOnASphereWithItsPolesAndSeam) {
     ASSERT_EQ(sphere.faces.size(), 1u);
     for (double tolerance : {0.8, 0.4}) {
         const double coarse =
-            measureInterpolatedNormalError(faceMesh(sphere, 0, tolerance), sphere.faces[0]).maxDeg;
-        const double fine =
-            measureInterpolatedNormalError(faceMesh(sphere, 0, tolerance / 16), sphere.faces[0])
+            measureInterpolatedNormalError(singleFaceMesh(sphere, 0, tolerance), sphere.faces[0])
                 .maxDeg;
+        const double fine = measureInterpolatedNormalError(
+                                singleFaceMesh(sphere, 0, tolerance / 16), sphere.faces[0])
+                                .maxDeg;
         EXPECT_LT(coarse, 5.0) << tolerance;
         EXPECT_GT(fine, 0.0);
         EXPECT_LT(fine, 0.15 * coarse) << tolerance;
@@ -95,7 +89,7 @@ TEST(InterpolatedNormalError, TheDefaultGridReadsWithinAFifthOfADenseOne) {
     const Model sphere = occ::importModel(BRepPrimAPI_MakeSphere(10.0).Shape());
     for (const Model* model : {&torus, &sphere}) {
         for (double tolerance : {0.5, 0.05}) {
-            const Mesh mesh = faceMesh(*model, 0, tolerance);
+            const Mesh mesh = singleFaceMesh(*model, 0, tolerance);
             const double sampled = measureInterpolatedNormalError(mesh, model->faces[0]).maxDeg;
             const double dense = measureInterpolatedNormalError(mesh, model->faces[0], 12).maxDeg;
             EXPECT_GT(sampled, 0.0);
