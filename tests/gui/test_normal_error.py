@@ -117,9 +117,9 @@ class SampleModelNormalError(NormalErrorCase, unittest.TestCase):
 class CorpusModelNormalError(NormalErrorCase, unittest.TestCase):
     model_name = "trj7"
     # Face 170 ends in a 0.0013 mm edge, almost a point: its triangles meet there at a corner
-    # whose vertex normal belongs to a sliver 85 degrees off the rest of the face. With the
-    # tighter cell bound its mesh there no longer lets the corner normals bring it within the
-    # bound (17.8 degrees measured at every level).
+    # whose vertex normal belongs to a sliver 85 degrees off the rest of the face. Since the
+    # tighter cell bound and the shared-edge changes its mesh there no longer lets the corner
+    # normals bring it within the bound (17.8 degrees measured at every level).
     known_over = (170,)
 
     def model_path(self):
