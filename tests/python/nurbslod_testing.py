@@ -12,6 +12,20 @@ CLI = os.path.join(BUILD_DIR, "App", "nurbslod")
 CORPUS_DIR = os.path.join(os.path.dirname(ROOT), "shared", "corpus")
 
 
+def bspline_face():
+    """A 30 x 30 bicubic patch with a bump: a freeform face, as FreeCAD users make them."""
+    import FreeCAD
+    import Part
+
+    heights = [[0, 0, 0, 0], [0, 5, 3, 0], [0, 2, 6, 0], [0, 0, 0, 0]]
+    poles = [[FreeCAD.Vector(10.0 * i, 10.0 * j, heights[i][j]) for j in range(4)]
+             for i in range(4)]
+    surface = Part.BSplineSurface()
+    surface.buildFromPolesMultsKnots(poles, [4, 4], [4, 4], [0.0, 1.0], [0.0, 1.0],
+                                     False, False, 3, 3)
+    return Part.Face(surface)
+
+
 def corpus_file(name):
     """Path of a corpus model; skips the test when the corpus is absent."""
     path = os.path.join(CORPUS_DIR, name)

@@ -7,6 +7,7 @@ import numpy as np
 import Part
 
 import NurbsLOD
+from nurbslod_testing import bspline_face
 
 
 class AnalysisMeshOfSphere(unittest.TestCase):
@@ -57,13 +58,8 @@ class AnalysisMeshOfSphere(unittest.TestCase):
 
 class AnalysisMeshOfBSplineFace(unittest.TestCase):
     def test_parameters_give_the_points(self):
-        heights = [[0, 0, 0, 0], [0, 5, 3, 0], [0, 2, 6, 0], [0, 0, 0, 0]]
-        poles = [[FreeCAD.Vector(10.0 * i, 10.0 * j, heights[i][j]) for j in range(4)]
-                 for i in range(4)]
-        surface = Part.BSplineSurface()
-        surface.buildFromPolesMultsKnots(poles, [4, 4], [4, 4], [0.0, 1.0], [0.0, 1.0],
-                                         False, False, 3, 3)
-        face = Part.Face(surface)
+        face = bspline_face()
+        surface = face.Surface
         r = NurbsLOD.analysis_mesh(face, relative=1e-3)
         edge_tolerance = max(max(e.Tolerance for e in face.Edges), 1e-9)
         for i in range(0, len(r["points"]), max(1, len(r["points"]) // 50)):

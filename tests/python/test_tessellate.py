@@ -8,18 +8,7 @@ import numpy as np
 import Part
 
 import NurbsLOD
-from nurbslod_testing import TempDirTestCase, corpus_file, edge_use_counts
-
-
-def bspline_face():
-    """A 30 x 30 bicubic patch with a bump: a freeform face, as FreeCAD users make them."""
-    heights = [[0, 0, 0, 0], [0, 5, 3, 0], [0, 2, 6, 0], [0, 0, 0, 0]]
-    poles = [[FreeCAD.Vector(10.0 * i, 10.0 * j, heights[i][j]) for j in range(4)]
-             for i in range(4)]
-    surface = Part.BSplineSurface()
-    surface.buildFromPolesMultsKnots(poles, [4, 4], [4, 4], [0.0, 1.0], [0.0, 1.0],
-                                     False, False, 3, 3)
-    return Part.Face(surface)
+from nurbslod_testing import TempDirTestCase, bspline_face, corpus_file, edge_use_counts
 
 
 class ArrayContract(unittest.TestCase):
