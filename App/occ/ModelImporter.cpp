@@ -116,15 +116,21 @@ Handle(Geom2d_BSplineCurve)
     return result;
 }
 
+// The face's surface under any rectangular trims (null for a face without geometry), and its
+// location.
+Handle(Geom_Surface) untrimmedSurface(const TopoDS_Face& face, TopLoc_Location& location) {
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
+    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface))
+        surface = trimmed->BasisSurface();
+    return surface;
+}
+
 }  // namespace
 
 Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
     TopLoc_Location location;
-    Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
-    if (surface.IsNull()) throw Standard_Failure("the face has no surface");
-    Handle(Geom_Surface) basis = surface;
-    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
-        basis = trimmed->BasisSurface();
+    const Handle(Geom_Surface) basis = untrimmedSurface(face, location);
+    if (basis.IsNull()) throw Standard_Failure("the face has no surface");
     Handle(Geom_BSplineSurface) bspline = Handle(Geom_BSplineSurface)::DownCast(basis);
     if (bspline.IsNull()) {
         double u0, u1, v0, v1;
@@ -150,9 +156,7 @@ namespace {
 // B-spline form has another parameter, and the faces of an edge must agree on its parameter.
 bool keepsParameterAsBSpline(const TopoDS_Face& face) {
     TopLoc_Location location;
-    Handle(Geom_Surface) surface = BRep_Tool::Surface(face, location);
-    while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface))
-        surface = trimmed->BasisSurface();
+    const Handle(Geom_Surface) surface = untrimmedSurface(face, location);
     if (surface.IsNull() || !(surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) ||
                               surface->IsKind(STANDARD_TYPE(Geom_Plane))))
         return false;
