@@ -4,6 +4,13 @@
     set_overlay(obj, "isophotes", count=32, line_width=2, direction=(0.3, 0.5, 1), lock="camera")
     set_overlay(obj, "curvature", curvature="mean", range=None, percentiles=(2, 98), levels=10)
     set_overlay(obj, None)        # FreeCAD's own display again, exactly as it was
+    set_overlay(obj, "zebra", wait=False); wait_for_overlay(obj)
+
+The overlay's mesh is made in a worker thread (BackgroundWorker), so the GUI keeps drawing
+while it is made: only the Coin nodes are built on the GUI thread. set_overlay waits by
+default, processing GUI events meanwhile; commands and observers do not wait. The kind and
+the options given are kept in the object's view properties Overlay and OverlayOptions, which
+the document saves: NurbsLODRestore shows the overlay again when it is opened.
 
 The overlay is a mesh of the object at a fine tolerance from NurbsLOD.analysis_mesh: every
 vertex carries the exact surface normal and curvature, interpolated across the triangles, so
@@ -113,8 +120,10 @@ RAMP_STOPS = (
     (1.0, (1.0, 0.0, 0.0)),
 )
 
-# The overlays that are on: (document name, object name) -> _Overlay
+# The overlays that are on or being made: (document name, object name) -> _Overlay
 _overlays = {}
+# Why the newest request of an object failed, for wait_for_overlay: key -> ValueError
+_failures = {}
 
 
 def ramp_color(t):
@@ -324,6 +333,136 @@ def _contains_face_set(node):
     return search.getPath() is not None
 
 
+def _analysis_mesh(shape, options):
+    """The overlay's mesh of shape at the options' fineness (may run in a worker thread:
+    analysis_mesh releases the GIL while it tessellates)."""
+    import NurbsLOD
+
+    if options.get("tolerance") is not None:
+        return NurbsLOD.analysis_mesh(shape, tolerance=options["tolerance"])
+    return NurbsLOD.analysis_mesh(shape, relative=options["relative"])
+
+
+def _shown_range(analysis, options):
+    """The values at the ends of a curvature map's colour ramp."""
+    if options["range"] is not None:
+        return options["range"]
+    values = analysis[options["curvature"]]
+    return curvature_range(values, options["percentiles"], vertex_areas(analysis))
+
+
+class BackgroundWorker:
+    """Runs jobs in a worker thread, one at a time, and hands their results to the GUI
+    thread, so that the GUI goes on drawing while a mesh is made: a QTimer polls the thread
+    every POLL_MS and calls deliver(result) or fail(error) there (Coin nodes are built on the
+    GUI thread only). Jobs that come while one runs are coalesced: only the newest waits.
+    With supersede, a newer job also drops the result of the one running (an overlay
+    request: only the newest counts); without it that result is shown too (a drag: every
+    step shown brings the stripes closer to the mouse)."""
+
+    POLL_MS = 15
+
+    def __init__(self, name, deliver, fail, supersede=False):
+        from PySide import QtCore
+
+        self.name = name
+        self.deliver, self.fail = deliver, fail
+        self.supersede = supersede
+        self.pending = None
+        self.thread = None
+        self.outcome = None  # the running job's box: {"result": ...} or {"error": ...}
+        self.superseded = False
+        self.timer = QtCore.QTimer()
+        self.timer.setInterval(self.POLL_MS)
+        self.timer.timeout.connect(self._poll)
+
+    def submit(self, job):
+        """Asks for job() to run in the worker; returns at once."""
+        self.pending = job
+        if self.thread is None:
+            self._start()
+        elif self.supersede:
+            self.superseded = True
+
+    def busy(self):
+        return self.thread is not None or self.pending is not None
+
+    def _start(self):
+        import threading
+
+        job, self.pending = self.pending, None
+        if job is None:
+            self.timer.stop()
+            return
+        box = {}  # the thread's own: a dropped thread that ends late cannot touch a newer one
+
+        def work():
+            try:
+                box["result"] = job()
+            except Exception as error:  # reported on the GUI thread
+                box["error"] = error
+
+        self.outcome = box
+        self.superseded = False
+        self.thread = threading.Thread(target=work, name=self.name, daemon=True)
+        self.thread.start()
+        self.timer.start()
+
+    def _poll(self):
+        if self.thread is None:
+            self.timer.stop()
+            return
+        if self.thread.is_alive():
+            return
+        box, dropped = self.outcome, self.superseded
+        self.thread, self.outcome = None, None
+        if not dropped:
+            try:
+                if "error" in box:
+                    self.fail(box["error"])
+                else:
+                    self.deliver(box.get("result"))
+            except Exception as error:  # a timer must not raise into FreeCAD
+                FreeCAD.Console.PrintError("NurbsLOD: {}: {}\n".format(self.name, error))
+        if self.pending is not None:
+            self._start()
+        else:
+            self.timer.stop()
+
+    def wait(self, seconds):
+        """Processes GUI events until every job is done and delivered, at most seconds;
+        True when idle. The GUI keeps drawing meanwhile: a script can wait without freezing
+        it."""
+        import time
+
+        from PySide import QtGui
+
+        end = time.monotonic() + seconds
+        while self.busy():
+            if time.monotonic() > end:
+                return False
+            QtGui.QApplication.processEvents()
+            self._poll()
+            if self.busy():
+                time.sleep(0.005)
+        return True
+
+    def stop(self):
+        """Drops what is pending and waits for a running job (its result is dropped)."""
+        self.pending = None
+        self.timer.stop()
+        if self.thread is not None:
+            self.thread.join()
+        self.thread, self.outcome = None, None
+
+    def abandon(self):
+        """Drops what is pending and the running job's result without waiting for it (the
+        object or its document went away: the job holds copies only and ends by itself)."""
+        self.pending = None
+        self.timer.stop()
+        self.thread, self.outcome = None, None
+
+
 class _Overlay:
     """One object's overlay: its nodes, the analysis mesh they show, and how to undo them."""
 
@@ -332,37 +471,126 @@ class _Overlay:
         self.name = obj.Name
         self.root, self.switch = _view_provider_switch(obj)
         self.saved_child = self.switch.whichChild.getValue()
+        self.label = obj.Label
         self.analysis = None
         self.analysis_key = None
+        # the document's mesh while a live edit shows another one (cancel goes back to it)
+        self.document_analysis = None
         self.group = None
-        self.kind = None
+        self.kind = None  # what the nodes show
         self.options = None
+        self.requested = None  # (kind, options) of the newest request, shown or not yet
+        self.given = {}  # the options set_overlay was given for it
+        self.result = None  # set_overlay's dict for what is shown
+        self.error = None  # why the newest request failed
+        self.worker = BackgroundWorker(
+            "NurbsLOD overlay", self._mesh_ready, self._mesh_failed, supersede=True
+        )
 
     # the mesh -----------------------------------------------------------------------------
-    def analysis_for(self, obj, options):
-        import NurbsLOD
-
+    def request(self, obj, kind, options):
+        """Shows kind with options: at once when the overlay has the mesh of the object's
+        shape at that fineness already (another kind, other stripes), else when a worker
+        thread has made it; until then the nodes show what they showed (an older overlay,
+        or FreeCAD's own display). A newer request drops an older one still running."""
         shape = _local_shape(obj)
         key = (hash(shape.exportBrepToString()), options.get("tolerance"), options.get("relative"))
-        if self.analysis is None or key != self.analysis_key:
-            if options.get("tolerance") is not None:
-                self.analysis = NurbsLOD.analysis_mesh(shape, tolerance=options["tolerance"])
-            else:
-                self.analysis = NurbsLOD.analysis_mesh(shape, relative=options["relative"])
-            self.analysis_key = key
-            failed = self.analysis["summary"]["faces_failed"]
-            if failed:
-                FreeCAD.Console.PrintWarning(
-                    "NurbsLOD: the overlay of {} leaves out {} face(s): {}\n".format(
-                        obj.Label,
-                        len(failed),
-                        "; ".join("Face{}: {}".format(f["face"], f["reason"]) for f in failed),
+        self.label = obj.Label
+        self.requested = (kind, options)
+        self.error = None
+        cached = None
+        if self.analysis is not None and key == self.analysis_key:
+            cached = self.analysis
+        elif self.document_analysis is not None and key == self.document_analysis[0]:
+            cached = self.document_analysis[1]  # a live edit cancelled: the document's face
+        if cached is not None:
+            self.worker.abandon()  # an older request's mesh is not wanted any more
+            self.analysis, self.analysis_key = cached, key
+            self.document_analysis = None
+            self.apply(kind, options)
+            return
+
+        def job():  # in the worker: analysis_mesh releases the GIL while it tessellates
+            analysis = _analysis_mesh(shape, options)
+            shown_range = None
+            if kind == "curvature" and len(analysis["triangles"]):
+                shown_range = _shown_range(analysis, options)
+            return key, kind, options, analysis, shown_range
+
+        self.worker.submit(job)
+
+    def _mesh_ready(self, made):
+        """The worker's mesh, on the GUI thread."""
+        key, kind, options, analysis, shown_range = made
+        if _overlays.get((self.document, self.name)) is not self:
+            return  # removed meanwhile (set_overlay None, object or document gone)
+        if len(analysis["triangles"]) == 0:
+            failed = analysis["summary"]["faces_failed"]
+            reasons = "; ".join("Face{}: {}".format(f["face"], f["reason"]) for f in failed)
+            self._mesh_failed(
+                ValueError(
+                    "NurbsLOD: no face of {} could be tessellated{}".format(
+                        self.label, ": " + reasons if reasons else ""
                     )
                 )
-        return self.analysis
+            )
+            return
+        failed = analysis["summary"]["faces_failed"]
+        if failed:
+            FreeCAD.Console.PrintWarning(
+                "NurbsLOD: the overlay of {} leaves out {} face(s): {}\n".format(
+                    self.label,
+                    len(failed),
+                    "; ".join("Face{}: {}".format(f["face"], f["reason"]) for f in failed),
+                )
+            )
+        self.analysis, self.analysis_key = analysis, key
+        self.document_analysis = None
+        self.apply(kind, options, shown_range)
+
+    def _mesh_failed(self, error):
+        """The newest request cannot be shown: the overlay goes, FreeCAD's display comes
+        back (an overlay of an older shape would mislead), the report view says why unless
+        a script waits for the answer (wait_for_overlay raises it)."""
+        self.error = error if isinstance(error, ValueError) else ValueError(str(error))
+        if _overlays.get((self.document, self.name)) is self:
+            del _overlays[(self.document, self.name)]
+            _failures[(self.document, self.name)] = self.error
+        self.remove_nodes()
+        if not self.waited_for:
+            FreeCAD.Console.PrintError(
+                "NurbsLOD: {}: no overlay: {}\n".format(self.label, self.error)
+            )
+
+    waited_for = False
+
+    def apply(self, kind, options, shown_range=None):
+        """Builds and shows the nodes of kind from the overlay's mesh (GUI thread)."""
+        analysis = self.analysis
+        options = dict(options)
+        if kind == "curvature":
+            options["shown_range"] = (
+                shown_range if shown_range is not None else _shown_range(analysis, options)
+            )
+        self.show(self.build(kind, options))
+        self.kind, self.options = kind, options
+        result = {
+            "kind": kind,
+            "options": dict(options),
+            "triangles": int(len(analysis["triangles"])),
+            "vertices": int(len(analysis["points"])),
+            "faces_failed": list(analysis["summary"]["faces_failed"]),
+        }
+        if kind == "curvature":
+            result["range"] = options["shown_range"]
+        self.result = result
+
+    def busy(self):
+        return self.worker.busy()
 
     # the scene ----------------------------------------------------------------------------
     def build(self, kind, options):
+        import numpy as np
         from pivy import coin
 
         analysis = self.analysis
@@ -406,11 +634,15 @@ class _Overlay:
         surface.addChild(hints)
         surface.addChild(self._shader(kind, options))
 
+        # numpy arrays go into the fields as they are: a list per vertex would cost the GUI
+        # thread milliseconds per ten thousand vertices
         coordinates = coin.SoCoordinate3()
-        coordinates.point.setValues(0, len(analysis["points"]), analysis["points"].tolist())
+        points = np.ascontiguousarray(analysis["points"], dtype=np.float32)
+        coordinates.point.setValues(0, len(points), points)
         surface.addChild(coordinates)
         normals = coin.SoNormal()
-        normals.vector.setValues(0, len(analysis["normals"]), analysis["normals"].tolist())
+        vectors = np.ascontiguousarray(analysis["normals"], dtype=np.float32)
+        normals.vector.setValues(0, len(vectors), vectors)
         surface.addChild(normals)
         binding = coin.SoNormalBinding()
         binding.value = coin.SoNormalBinding.PER_VERTEX_INDEXED
@@ -427,17 +659,20 @@ class _Overlay:
             texture.wrapT = coin.SoTexture2.CLAMP
             surface.addChild(texture)
             texture_coordinates = coin.SoTextureCoordinate2()
-            texture_coordinates.point.setValues(0, len(values), [(float(v), 0.5) for v in values])
+            along = np.empty((len(values), 2), dtype=np.float32)
+            along[:, 0] = values
+            along[:, 1] = 0.5
+            texture_coordinates.point.setValues(0, len(along), along)
             surface.addChild(texture_coordinates)
             texture_binding = coin.SoTextureCoordinateBinding()
             texture_binding.value = coin.SoTextureCoordinateBinding.PER_VERTEX_INDEXED
             surface.addChild(texture_binding)
         face_set = coin.SoIndexedFaceSet()
-        import numpy as np
-
-        triangles = analysis["triangles"].astype(np.int64)
-        index = np.hstack([triangles, -np.ones((len(triangles), 1), dtype=np.int64)]).ravel()
-        face_set.coordIndex.setValues(0, len(index), index.tolist())
+        triangles = analysis["triangles"]
+        index = np.full((len(triangles), 4), -1, dtype=np.int32)
+        index[:, :3] = triangles
+        index = index.ravel()
+        face_set.coordIndex.setValues(0, len(index), index)
         surface.addChild(face_set)
         group.addChild(surface)
 
@@ -687,6 +922,8 @@ def _show_face(obj, face_index, replacement):
     overlay = _overlays.get(_key(obj))
     if overlay is None or overlay.analysis is None:
         return False
+    if overlay.analysis_key is not None:  # the document's mesh: kept for a cancel
+        overlay.document_analysis = (overlay.analysis_key, overlay.analysis)
     overlay.analysis = _with_face_replaced(overlay.analysis, face_index, replacement)
     overlay.analysis_key = None  # no longer the document's shape
     overlay.show(overlay.build(overlay.kind, overlay.options))
@@ -721,157 +958,220 @@ def follow_face(obj, face_index, face, coarsening=LIVE_COARSENING):
 
 class LiveFaceFollower:
     """Follows one face of an object's overlay during a drag without holding up the view: the
-    face is analysed in a worker thread while the GUI goes on drawing (the node shows the new
-    face at once), and the newest result is spliced in on the GUI thread. Moves that come
+    face is analysed in a BackgroundWorker while the GUI goes on drawing (the node shows the
+    new face at once), and the newest result is spliced in on the GUI thread. Moves that come
     while a worker runs are coalesced: only the last one is analysed next."""
 
-    POLL_MS = 15
-
     def __init__(self, obj, face_index, coarsening=LIVE_COARSENING):
-        from PySide import QtCore
-
         self.obj = obj
         self.face_index = face_index
         self.coarsening = coarsening
-        self.pending = None
-        self.worker = None
-        self.outcome = None
         self.shown = 0  # results spliced in so far
-        self.timer = QtCore.QTimer()
-        self.timer.setInterval(self.POLL_MS)
-        self.timer.timeout.connect(self._poll)
+        self.worker = BackgroundWorker("NurbsLOD live overlay", self._show, self._report)
 
     def submit(self, face):
         """Asks for `face` to be shown; returns at once."""
-        self.pending = face
-        if self.worker is None:
-            self._start()
+        tolerance = _live_tolerance(self.obj, self.coarsening)
+        if tolerance is None:
+            return
+        self.worker.submit(lambda: _analyse_face(face, tolerance))
 
     def busy(self):
-        return self.worker is not None or self.pending is not None
+        return self.worker.busy()
 
-    def _start(self):
-        import threading
+    def _show(self, replacement):
+        if _show_face(self.obj, self.face_index, replacement):
+            self.shown += 1
 
-        face, self.pending = self.pending, None
-        tolerance = _live_tolerance(self.obj, self.coarsening)
-        if face is None or tolerance is None:
-            self.timer.stop()
-            return
-
-        def work():
-            try:
-                self.outcome = ("mesh", _analyse_face(face, tolerance))
-            except Exception as error:  # reported on the GUI thread
-                self.outcome = ("error", error)
-
-        self.outcome = None
-        self.worker = threading.Thread(target=work, name="NurbsLOD live overlay", daemon=True)
-        self.worker.start()
-        self.timer.start()
-
-    def _poll(self):
-        if self.worker is None:
-            self.timer.stop()
-            return
-        if self.worker.is_alive():
-            return
-        self.worker = None
-        outcome, self.outcome = self.outcome, None
-        if outcome is not None and outcome[0] == "mesh":
-            if _show_face(self.obj, self.face_index, outcome[1]):
-                self.shown += 1
-        elif outcome is not None:
-            FreeCAD.Console.PrintWarning(
-                "NurbsLOD: the overlay of {} keeps the old face {}: {}\n".format(
-                    self.obj.Label, self.face_index, outcome[1]
-                )
+    def _report(self, error):
+        FreeCAD.Console.PrintWarning(
+            "NurbsLOD: the overlay of {} keeps the old face {}: {}\n".format(
+                self.obj.Label, self.face_index, error
             )
-        if self.pending is not None:
-            self._start()
-        else:
-            self.timer.stop()
+        )
 
     def stop(self):
         """Drops what is pending and waits for a running worker (its result is dropped)."""
-        self.pending = None
-        self.timer.stop()
-        if self.worker is not None:
-            self.worker.join()
-            self.worker = None
-        self.outcome = None
+        self.worker.stop()
 
 
-def set_overlay(obj, kind, **options):
+# How long set_overlay(wait=True) and wait_for_overlay wait by default for the worker.
+WAIT_SECONDS = 300.0
+
+
+def set_overlay(obj, kind, wait=True, **options):
     """Shows an analysis overlay on the object instead of its shaded faces, or (kind None)
     removes it and restores FreeCAD's display exactly.
 
-    kind: "isophotes", "zebra", "curvature" or None; options: see the module's help.
-    Returns a dict: kind, the options used, triangles and vertices of the overlay mesh,
-    faces_failed (faces left out, with the reason) and, for "curvature", range (the values
-    at the ends of the colour ramp). Raises ValueError for a bad kind, option or object.
+    kind: "isophotes", "zebra", "curvature" or None; options: see the module's help. The
+    overlay's mesh is made in a worker thread (a second or more for a large part) while the
+    GUI keeps drawing what it showed; only the Coin nodes are built on the GUI thread. A
+    newer request for the object replaces an older one still running.
+
+    wait=True (for scripts): processes GUI events until the overlay is shown and returns a
+    dict: kind, the options used, triangles and vertices of the overlay mesh, faces_failed
+    (faces left out, with the reason) and, for "curvature", range (the values at the ends of
+    the colour ramp). wait=False (commands, observers): returns at once, {"kind", "options",
+    "pending"}; wait_for_overlay gives the dict later. Raises ValueError for a bad kind,
+    option or object, and (waiting) when no face can be analysed; without waiting the report
+    view says why.
     """
     if kind is None:
+        _failures.pop(_key(obj), None)
         overlay = _overlays.pop(_key(obj), None)
         if overlay is not None:
+            overlay.worker.abandon()
             overlay.remove_nodes()
+        _record(obj, None, None)
         return {"kind": None}
     if kind not in KINDS:
         raise ValueError(
             "NurbsLOD: kind must be one of {} or None, got {!r}".format(", ".join(KINDS), kind)
         )
+    given = dict(options)
     options = options_for(kind, options)
-    overlay = _overlays.get(_key(obj))
+    key = _key(obj)
+    overlay = _overlays.get(key)
     if overlay is None:
         overlay = _Overlay(obj)
-    analysis = overlay.analysis_for(obj, options)
-    if len(analysis["triangles"]) == 0:
-        raise ValueError("NurbsLOD: no face of {} could be tessellated".format(obj.Label))
-    if kind == "curvature":
-        values = analysis[options["curvature"]]
-        options["shown_range"] = (
-            options["range"]
-            if options["range"] is not None
-            else curvature_range(values, options["percentiles"], vertex_areas(analysis))
-        )
-    group = overlay.build(kind, options)
-    overlay.show(group)
-    overlay.kind = kind
-    overlay.options = options
-    _overlays[_key(obj)] = overlay
+    _failures.pop(key, None)
+    _overlays[key] = overlay
     _observe()
-    summary = analysis["summary"]
-    result = {
-        "kind": kind,
-        "options": dict(options),
-        "triangles": int(len(analysis["triangles"])),
-        "vertices": int(len(analysis["points"])),
-        "faces_failed": list(summary["faces_failed"]),
-    }
-    if kind == "curvature":
-        result["range"] = options["shown_range"]
-    return result
+    try:
+        overlay.given = given  # what a refresh asks for again (preferences may change)
+        overlay.request(obj, kind, options)
+    except Exception:
+        if overlay.group is None and _overlays.get(key) is overlay:
+            del _overlays[key]  # nothing shown: no overlay
+        raise
+    _record(obj, kind, given)
+    if wait:
+        return wait_for_overlay(obj)
+    if overlay.busy():
+        return {"kind": kind, "options": dict(options), "pending": True}
+    return dict(overlay.result)
+
+
+def wait_for_overlay(obj, timeout=WAIT_SECONDS):
+    """Processes GUI events until the object's newest overlay request is shown; returns
+    set_overlay's dict for it, or None when the object has no overlay. Raises ValueError
+    when the request failed (the overlay is then removed) and TimeoutError after timeout
+    seconds."""
+    key = _key(obj)
+    overlay = _overlays.get(key)
+    if overlay is None:
+        error = _failures.pop(key, None)
+        if error is not None:
+            raise error
+        return None
+    overlay.waited_for = True
+    try:
+        idle = overlay.worker.wait(timeout)
+    finally:
+        overlay.waited_for = False
+    if not idle:
+        raise TimeoutError(
+            "NurbsLOD: the overlay of {} is not ready after {} s".format(obj.Label, timeout)
+        )
+    if overlay.error is not None:
+        _failures.pop(key, None)
+        raise overlay.error
+    return dict(overlay.result) if overlay.result is not None else None
+
+
+def overlay_pending(obj):
+    """True while the object's overlay is being made in a worker thread."""
+    overlay = _overlays.get(_key(obj))
+    return overlay is not None and overlay.busy()
 
 
 def overlay_of(obj):
-    """The kind of overlay the object shows, or None."""
-    overlay = _overlays.get(_key(obj))
-    return overlay.kind if overlay is not None else None
-
-
-def refresh_overlay(obj):
-    """Rebuilds the object's overlay from its current shape (after an edit); a no-op when it
-    has none. Returns set_overlay's dict, or None."""
+    """The kind of overlay the object shows, or is about to show (see overlay_pending), or
+    None."""
     overlay = _overlays.get(_key(obj))
     if overlay is None:
         return None
-    options = {k: v for k, v in overlay.options.items() if k != "shown_range"}
-    return set_overlay(obj, overlay.kind, **options)
+    return overlay.requested[0] if overlay.requested is not None else overlay.kind
+
+
+def refresh_overlay(obj, wait=False):
+    """Rebuilds the object's overlay from its current shape (after an edit), in a worker
+    thread unless wait; a no-op when it has none. The old overlay stays on until the new
+    one is ready. Returns set_overlay's dict, or None."""
+    overlay = _overlays.get(_key(obj))
+    if overlay is None or overlay.requested is None:
+        return None
+    return set_overlay(obj, overlay.requested[0], wait=wait, **overlay.given)
+
+
+# The view properties that keep an object's overlay in its document, so that it comes back
+# when the document is opened again (NurbsLODRestore): the kind ("" for none) and the options
+# the user gave (JSON; the preferences fill in the rest when it comes back).
+OVERLAY_PROPERTY = "Overlay"
+OVERLAY_OPTIONS_PROPERTY = "OverlayOptions"
+
+
+def _record(obj, kind, options):
+    """Writes the overlay's kind and options into the object's view properties (added on
+    first use, read-only in the property editor: set_overlay changes them)."""
+    import json
+
+    view = getattr(obj, "ViewObject", None)
+    if view is None:
+        return
+    try:
+        if not hasattr(view, OVERLAY_PROPERTY):
+            if kind is None:
+                return  # nothing to remember
+            view.addProperty(
+                "App::PropertyString", OVERLAY_PROPERTY, "NurbsLOD",
+                "The analysis overlay shown: isophotes, zebra, curvature or empty",
+            )
+            view.addProperty(
+                "App::PropertyString", OVERLAY_OPTIONS_PROPERTY, "NurbsLOD",
+                "The options of the overlay (JSON)",
+            )
+            view.setEditorMode(OVERLAY_PROPERTY, 1)
+            view.setEditorMode(OVERLAY_OPTIONS_PROPERTY, 1)
+        text = json.dumps(options or {}, sort_keys=True)
+        if getattr(view, OVERLAY_PROPERTY) != (kind or ""):
+            setattr(view, OVERLAY_PROPERTY, kind or "")
+        if getattr(view, OVERLAY_OPTIONS_PROPERTY) != text:
+            setattr(view, OVERLAY_OPTIONS_PROPERTY, text)
+    except Exception as error:  # remembering is a convenience: never fail the overlay for it
+        FreeCAD.Console.PrintWarning(
+            "NurbsLOD: {}: the overlay is not kept in the document: {}\n".format(
+                obj.Label, error
+            )
+        )
+
+
+def recorded_overlay(obj):
+    """(kind, options) that the object's view properties keep, or None."""
+    import json
+
+    view = getattr(obj, "ViewObject", None)
+    kind = getattr(view, OVERLAY_PROPERTY, "") if view is not None else ""
+    if kind not in KINDS:
+        return None
+    try:
+        options = json.loads(getattr(view, OVERLAY_OPTIONS_PROPERTY, "") or "{}")
+    except ValueError:
+        options = {}
+    return kind, options if isinstance(options, dict) else {}
+
+
+def _forget(key):
+    overlay = _overlays.pop(key, None)
+    _failures.pop(key, None)
+    if overlay is not None:
+        overlay.worker.abandon()  # its worker ends by itself, its result is dropped
+    return overlay
 
 
 class _ShapeObserver:
     """Rebuilds an object's overlay when its shape changes, however it changed: move_pole, the
-    pole editor, undo and redo, a recompute."""
+    pole editor, undo and redo, a recompute; forgets it when the object or its document goes."""
 
     def slotChangedObject(self, obj, prop):
         if prop != "Shape" or _key(obj) not in _overlays:
@@ -884,13 +1184,18 @@ class _ShapeObserver:
                     obj.Label, error
                 )
             )
-            overlay = _overlays.pop(_key(obj), None)
+            overlay = _forget(_key(obj))
             if overlay is not None:
                 overlay.remove_nodes()
 
+    def slotDeletedObject(self, obj):
+        overlay = _forget(_key(obj))
+        if overlay is not None:
+            overlay.remove_nodes()
+
     def slotDeletedDocument(self, document):
         for key in [key for key in _overlays if key[0] == document.Name]:
-            del _overlays[key]
+            _forget(key)
 
 
 _observers = []
@@ -951,19 +1256,15 @@ class OverlayCommand:
         return bool(objects)
 
     def Activated(self):
-        from PySide import QtCore, QtGui
-
-        QtGui.QApplication.setOverrideCursor(QtGui.QCursor(QtCore.Qt.WaitCursor))
-        try:
-            for obj in _selected_objects():
-                try:  # a command must not raise: tell the user instead
-                    set_overlay(obj, self.kind)
-                except Exception as error:
-                    FreeCAD.Console.PrintError(
-                        "NurbsLOD: no overlay on {}: {}\n".format(obj.Label, error)
-                    )
-        finally:
-            QtGui.QApplication.restoreOverrideCursor()
+        # the meshes are made in worker threads: the view keeps drawing, each overlay comes
+        # on when it is ready
+        for obj in _selected_objects():
+            try:  # a command must not raise: tell the user instead
+                set_overlay(obj, self.kind, wait=False)
+            except Exception as error:
+                FreeCAD.Console.PrintError(
+                    "NurbsLOD: no overlay on {}: {}\n".format(obj.Label, error)
+                )
 
 
 def register_commands():

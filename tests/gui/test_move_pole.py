@@ -131,6 +131,8 @@ class MovePoleUnderOverlay(unittest.TestCase):
         pole = self.obj.Shape.Faces[0].Surface.getPole(4, 4)
         NurbsLODGui.move_pole(self.obj, 1, 4, 4, pole + FreeCAD.Vector(0, 0, 5))
         self.assertEqual(NurbsLODOverlays.overlay_of(self.obj), "zebra")
+        # the overlay of the new shape is made in a worker thread
+        self.assertEqual(NurbsLODOverlays.wait_for_overlay(self.obj)["kind"], "zebra")
         after = NurbsLODOverlays._overlays[(self.document.Name, self.obj.Name)].analysis["points"]
         # the overlay's mesh rises where the pole was lifted
 
@@ -141,5 +143,6 @@ class MovePoleUnderOverlay(unittest.TestCase):
         self.assertGreater(height_near_pole(after), height_near_pole(before) + 0.5)
         # and back with undo
         self.document.undo()
+        NurbsLODOverlays.wait_for_overlay(self.obj)
         undone = NurbsLODOverlays._overlays[(self.document.Name, self.obj.Name)].analysis["points"]
         self.assertAlmostEqual(height_near_pole(undone), height_near_pole(before), places=9)

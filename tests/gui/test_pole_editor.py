@@ -89,6 +89,8 @@ class PoleEditing(unittest.TestCase):
         gt.draw(self.view)
         gt.screenshot(self.view, "pole-editor-zebra-live")
         editor.cancel()
+        # the document's mesh, kept while the edit showed another: back at once, no worker
+        self.assertFalse(NurbsLODOverlays.overlay_pending(self.obj))
         overlay = NurbsLODOverlays._overlays[NurbsLODOverlays._key(self.obj)]
         self.assertAlmostEqual(float(overlay.analysis["points"][:, 2].max()), top_before, delta=1e-9)
 
