@@ -43,6 +43,15 @@ def _nurbslod_preferences():
     Gui.addIconPath(os.path.join(NurbsLODPaths.ROOT, "Resources", "icons"))  # noqa: F821
 
 
+def _nurbslod_restore_on_open():
+    # Documents saved with adaptive display or overlays get them back when opened, also
+    # before the workbench is opened (the observer imports the display modules when needed).
+    import NurbsLODRestore
+
+    NurbsLODRestore.install()
+
+
 Gui.addWorkbench(NurbsLODWorkbench())  # noqa: F821 (FreeCAD provides Gui here)
 _nurbslod_preferences()
-del _nurbslod_preferences
+_nurbslod_restore_on_open()
+del _nurbslod_preferences, _nurbslod_restore_on_open

@@ -31,16 +31,19 @@ DEFAULT_FRAME_BUDGET_MS = 20.0
 DEFAULT_NORMAL_ERROR_DEG = 1.0
 
 try:
-    from NurbsLODOverlays import set_overlay  # noqa: F401 (re-exported)
+    from NurbsLODOverlays import set_overlay, wait_for_overlay  # noqa: F401 (re-exported)
 except ImportError as _overlay_import_error:
     _OVERLAY_ERROR = str(_overlay_import_error)
 
-    def set_overlay(obj, kind, **options):
+    def set_overlay(obj, kind, wait=True, **options):
         """Analysis overlays (isophotes, zebra, curvature) are not installed."""
         raise RuntimeError(
             "NurbsLOD: the overlays module NurbsLODOverlays cannot be imported ({}); "
             "set_overlay is not available".format(_OVERLAY_ERROR)
         )
+
+    def wait_for_overlay(obj, timeout=None):
+        return None
 
 
 def parameters():
@@ -393,6 +396,7 @@ def _install(obj, prepared, pixel_error, frame_budget_ms, normal_error_deg):
     display.failures = summary["faces_failed"]
     _displays[_key(obj)] = display
     _observe()
+    _record(obj, True)
     _update_hidden_faces(obj.Document.Name, obj.Name)
     report_failures(obj, summary["faces_failed"])
     return summary
@@ -400,6 +404,14 @@ def _install(obj, prepared, pixel_error, frame_budget_ms, normal_error_deg):
 
 def disable_adaptive_display(obj):
     """Gives obj back FreeCAD's own display. Returns False when it was not enabled."""
+    was_on = _disable(obj)
+    _record(obj, False)
+    return was_on
+
+
+def _disable(obj):
+    """disable_adaptive_display without changing the view property (the object goes away,
+    or the property changed already)."""
     _pending.pop(_key(obj), None)  # a preparation still running is dropped when it ends
     display = _displays.pop(_key(obj), None)
     if display is None:
@@ -446,8 +458,39 @@ def refresh(obj):
     return summary
 
 
-# The view property that the command and undo go through.
+# The view property that the command and undo go through; it also keeps the state in the
+# saved document, so that adaptive display comes back when it is opened (NurbsLODRestore).
 PROPERTY = "AdaptiveDisplay"
+
+
+def _add_property(view, enabled):
+    view.addProperty(
+        "App::PropertyBool",
+        PROPERTY,
+        "NurbsLOD",
+        "Draw every face within the screen-space error of the preferences",
+    )
+    setattr(view, PROPERTY, enabled)
+
+
+def _record(obj, enabled):
+    """Writes the state into obj's view property (the macro API does not go through it),
+    unless it says so already."""
+    view = getattr(obj, "ViewObject", None)
+    if view is None:
+        return
+    try:
+        if not hasattr(view, PROPERTY):
+            if enabled:
+                _add_property(view, True)
+        elif bool(getattr(view, PROPERTY)) != enabled:
+            setattr(view, PROPERTY, enabled)
+    except Exception as error:  # remembering is a convenience: never fail the display for it
+        FreeCAD.Console.PrintWarning(
+            "NurbsLOD: {}: adaptive display is not kept in the document: {}\n".format(
+                obj.Label, error
+            )
+        )
 
 
 def set_adaptive_display(objects, enabled):
@@ -465,13 +508,7 @@ def set_adaptive_display(objects, enabled):
     for obj in objects:
         view = obj.ViewObject
         if not hasattr(view, PROPERTY):
-            view.addProperty(
-                "App::PropertyBool",
-                PROPERTY,
-                "NurbsLOD",
-                "Draw every face within the screen-space error of the preferences",
-            )
-            setattr(view, PROPERTY, is_enabled(obj))
+            _add_property(view, is_enabled(obj))
     name = "Adaptive display {}".format("on" if enabled else "off")
     for document in documents:
         document.openTransaction(name)
@@ -497,7 +534,7 @@ class _ViewObserver:
                 # in a thread: a large model must not freeze the GUI while it is imported
                 enable_adaptive_display(obj, wait=False)
             elif not wanted and (is_enabled(obj) or is_pending(obj)):
-                disable_adaptive_display(obj)
+                _disable(obj)
         except Exception as error:  # an observer must not raise into FreeCAD
             FreeCAD.Console.PrintError(
                 "NurbsLOD: {}: adaptive display not changed: {}\n".format(obj.Label, error)
@@ -581,10 +618,12 @@ class _DocumentObserver:
     """Forgets objects that go away and re-reads shapes that change."""
 
     def slotDeletedObject(self, obj):
-        if _key(obj) in _displays:
-            disable_adaptive_display(obj)
+        if _key(obj) in _displays or _key(obj) in _pending:
+            _disable(obj)
 
     def slotDeletedDocument(self, document):
+        for key in [key for key in _pending if key[0] == document.Name]:
+            del _pending[key]  # its thread ends by itself, nothing is installed
         for key in [key for key in _displays if key[0] == document.Name]:
             _displays.pop(key).remove()
 
