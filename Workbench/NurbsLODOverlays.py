@@ -308,19 +308,42 @@ def _view_provider_switch(obj):
     raise ValueError("NurbsLOD: {}'s view provider has no display-mode switch".format(obj.Name))
 
 
-def _local_shape(obj):
-    """The object's shape in the coordinates of its view provider, whose Transform node
-    applies the object's Placement."""
+def _document_shape(obj):
+    """The object's shape as the document holds it (not copied: FreeCAD hands it out
+    read-only); ValueError when it has no faces."""
     shape = getattr(obj, "Shape", None)
     if shape is None or shape.isNull():
         raise ValueError("NurbsLOD: {} has no shape to analyse".format(obj.Name))
-    if not shape.Faces:
+    if shape.countElement("Face") == 0:
         raise ValueError("NurbsLOD: {} has no faces to analyse".format(obj.Name))
-    local = shape.copy()
-    placement = getattr(obj, "Placement", None)
-    if placement is not None:
-        local.Placement = placement.inverse().multiply(shape.Placement)
-    return local
+    return shape
+
+
+def _in_view_coordinates(shape, placement):
+    """shape in the coordinates of the object's view provider, whose Transform node applies
+    the object's placement: shape itself when both placements are the identity (an object
+    that was never moved), else a copy (tens of milliseconds for a large part: call it in
+    the worker)."""
+    if placement is None:
+        return shape
+    local = placement.inverse().multiply(shape.Placement)
+    if local.isIdentity() and shape.Placement.isIdentity():
+        return shape
+    copy = shape.copy()
+    copy.Placement = local
+    return copy
+
+
+def _local_shape(obj):
+    """The object's shape in the coordinates of its view provider."""
+    return _in_view_coordinates(_document_shape(obj), getattr(obj, "Placement", None))
+
+
+def _same_mesh_source(a, b):
+    """Whether two (shape, tolerance, relative) keys ask for the same mesh: the same
+    tolerances and the same document shape (OpenCASCADE's isSame: the same shared topology
+    at the same place; every change of a document's shape makes a new one)."""
+    return a is not None and b is not None and a[1:] == b[1:] and a[0].isSame(b[0])
 
 
 def _contains_face_set(node):
@@ -493,15 +516,20 @@ class _Overlay:
         shape at that fineness already (another kind, other stripes), else when a worker
         thread has made it; until then the nodes show what they showed (an older overlay,
         or FreeCAD's own display). A newer request drops an older one still running."""
-        shape = _local_shape(obj)
-        key = (hash(shape.exportBrepToString()), options.get("tolerance"), options.get("relative"))
+        # the GUI thread only takes the shape (shared, read-only) and its placement: copying
+        # or exporting a large part takes tens of milliseconds, left to the worker
+        shape = _document_shape(obj)
+        placement = getattr(obj, "Placement", None)
+        key = (shape, options.get("tolerance"), options.get("relative"))
         self.label = obj.Label
         self.requested = (kind, options)
         self.error = None
         cached = None
-        if self.analysis is not None and key == self.analysis_key:
+        if self.analysis is not None and _same_mesh_source(key, self.analysis_key):
             cached = self.analysis
-        elif self.document_analysis is not None and key == self.document_analysis[0]:
+        elif self.document_analysis is not None and _same_mesh_source(
+            key, self.document_analysis[0]
+        ):
             cached = self.document_analysis[1]  # a live edit cancelled: the document's face
         if cached is not None:
             self.worker.abandon()  # an older request's mesh is not wanted any more
@@ -511,7 +539,7 @@ class _Overlay:
             return
 
         def job():  # in the worker: analysis_mesh releases the GIL while it tessellates
-            analysis = _analysis_mesh(shape, options)
+            analysis = _analysis_mesh(_in_view_coordinates(shape, placement), options)
             shown_range = None
             if kind == "curvature" and len(analysis["triangles"]):
                 shown_range = _shown_range(analysis, options)
@@ -566,6 +594,9 @@ class _Overlay:
 
     def apply(self, kind, options, shown_range=None):
         """Builds and shows the nodes of kind from the overlay's mesh (GUI thread)."""
+        import time
+
+        start = time.perf_counter()
         analysis = self.analysis
         options = dict(options)
         if kind == "curvature":
@@ -583,6 +614,8 @@ class _Overlay:
         }
         if kind == "curvature":
             result["range"] = options["shown_range"]
+        # the GUI thread's share of the overlay (the nodes built and put in the switch)
+        result["build_ms"] = 1000.0 * (time.perf_counter() - start)
         self.result = result
 
     def busy(self):
