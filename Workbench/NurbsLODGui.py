@@ -350,7 +350,7 @@ def _install(obj, prepared, pixel_error, frame_budget_ms, normal_error_deg):
     if obj.Document is None or getattr(obj, "ViewObject", None) is None:
         raise RuntimeError("the object was deleted")
     if _key(obj) in _displays:
-        disable_adaptive_display(obj)
+        _disable(obj)  # a refresh: the new node replaces the old one
     coin, NurbsLODCoin = _coin()
     groups = _face_set_groups(obj.ViewObject)
     if not groups:
@@ -449,8 +449,28 @@ def stats(obj):
     return NurbsLODCoin.stats(_display_of(obj).node)
 
 
+def refresh_in_background(obj):
+    """Re-reads obj's shape in a thread (as enable_adaptive_display(wait=False) does) with
+    the display's own pixel error, frame budget and normal bound; the old node keeps drawing
+    the old shape until the new one replaces it (bottle: 3.5 s of import that the GUI thread
+    would otherwise wait for)."""
+    display = _displays.get(_key(obj))
+    if display is not None and display.node is not None:
+        node = display.node
+        options = (
+            node.pixelError.getValue(),
+            node.frameBudget.getValue(),
+            node.normalError.getValue(),
+        )
+    elif _key(obj) in _pending:
+        options = _pending[_key(obj)].options
+    else:
+        raise ValueError("NurbsLOD: adaptive display is not enabled for {}".format(obj.Label))
+    _prepare_in_thread(obj, local_shape(obj).exportBrepToString(), options)
+
+
 def refresh(obj):
-    """Re-reads obj's shape into its node (after a recompute changed it)."""
+    """Re-reads obj's shape into its node (after a recompute changed it), at once."""
     display = _display_of(obj)
     _, NurbsLODCoin = _coin()
     summary = NurbsLODCoin.set_shape(display.node, local_shape(obj).exportBrepToString())
@@ -628,13 +648,16 @@ class _DocumentObserver:
             _displays.pop(key).remove()
 
     def slotChangedObject(self, obj, prop):
-        if prop != "Shape" or _key(obj) not in _displays or _editing:
+        if prop != "Shape" or _editing:
+            return
+        if _key(obj) not in _displays and _key(obj) not in _pending:
             return
         try:
-            if obj.Shape.isNull() or not obj.Shape.Faces:
+            if obj.Shape.isNull() or obj.Shape.countElement("Face") == 0:
                 disable_adaptive_display(obj)
             else:
-                refresh(obj)
+                # a recompute, undo or redo of a large part must not freeze the GUI
+                refresh_in_background(obj)
         except Exception as error:
             FreeCAD.Console.PrintError(
                 "NurbsLOD: {}: adaptive display off: {}\n".format(obj.Label, error)

@@ -46,6 +46,7 @@ class MovePole(unittest.TestCase):
         self.assertEqual(self.document.UndoNames[0], "Move pole")
 
         self.document.undo()
+        self.assertTrue(NurbsLODGui.wait_until_ready(self.obj))  # re-read in a thread
         restored_shape = NurbsLODGui.local_shape(self.obj)
         # FreeCAD's undo restores a deep copy, whose BREP text differs from the original by
         # an identity location; the geometry must be the very same numbers

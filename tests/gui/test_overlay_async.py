@@ -1,6 +1,6 @@
 """Overlays never hold up the GUI: their meshes are made in a worker thread, a newer request
 replaces an older one, closing the document or deleting the object while a worker runs is
-harmless."""
+harmless. Adaptive display re-reads a changed shape in a thread too."""
 
 import time
 import unittest
@@ -134,6 +134,36 @@ class OverlayInTheBackground(unittest.TestCase):
         with self.assertRaises(ValueError):
             NurbsLODOverlays.set_overlay(self.obj, "zebra")
         self.assertIsNone(NurbsLODOverlays.overlay_of(self.obj))
+
+
+class AdaptiveDisplayInTheBackground(unittest.TestCase):
+    def test_a_shape_change_is_read_in_a_thread_while_the_old_node_draws(self):
+        document, obj, view = gt.open_shape(gt.bicubic_face(12), "AsyncNode")
+        self.addCleanup(_close_if_open, document.Name)
+        NurbsLODGui.enable_adaptive_display(obj, pixel_error=0.8)
+        old_node = NurbsLODGui.node_of(obj)
+        gt.settle(view, obj)
+        self.assertLess(NurbsLODGui.face_bounds(obj, 1)[1][0], 101.0)
+        obj.Shape = gt.bicubic_face(12, size=300.0)  # three times as large
+        self.assertTrue(NurbsLODGui.is_pending(obj))
+        self.assertIs(NurbsLODGui.node_of(obj), old_node)  # still drawing the old shape
+        self.assertTrue(NurbsLODGui.wait_until_ready(obj))
+        node = NurbsLODGui.node_of(obj)
+        self.assertIsNot(node, old_node)
+        self.assertAlmostEqual(node.pixelError.getValue(), 0.8, places=6)  # its options kept
+        view.fitAll()
+        gt.settle(view, obj)
+        self.assertGreater(NurbsLODGui.face_bounds(obj, 1)[1][0], 250.0)
+        # deleted while a new shape is read: the thread's result goes nowhere
+        obj.Shape = gt.bicubic_face(12)
+        self.assertTrue(NurbsLODGui.is_pending(obj))
+        thread = NurbsLODGui._pending[NurbsLODGui._key(obj)].thread
+        key = NurbsLODGui._key(obj)
+        document.removeObject(obj.Name)
+        thread.join(60)
+        _pump(0.2)
+        self.assertNotIn(key, NurbsLODGui._displays)
+        self.assertNotIn(key, NurbsLODGui._pending)
 
 
 def _close_if_open(name):
