@@ -13,6 +13,9 @@ until the overlay has been drawn once: the longest time the GUI could not answer
 a redraw). The view is drawn by Mesa's software renderer here, so the first draw of a large
 overlay mesh is a block of its own, in both columns alike. The frame budget of the adaptive
 display is 20 ms.
+
+A second table: adaptive display when the object's shape changes, the model re-read on the
+GUI thread (as before) or in a thread (as now), the longest block until the new node is in.
 """
 
 import os
@@ -157,6 +160,43 @@ def _measure(obj, view, kind):
     return results
 
 
+def _measure_refresh(obj):
+    """The object's shape replaced by a copy with adaptive display on: re-read on the GUI
+    thread (NurbsLODGui.refresh, what the document observer did) or in a thread (what it
+    does now). Returns {mode: (longest block ms, seconds until the new node is in)}."""
+    import NurbsLODGui
+
+    NurbsLODGui.enable_adaptive_display(obj)
+    meter = GapMeter()
+    results = {}
+    for mode in ("gui", "worker"):
+        shape = obj.Shape.copy()
+        meter.start()
+        if mode == "gui":
+            done = []
+
+            def change():
+                NurbsLODGui._editing = True  # the observer leaves it to us
+                try:
+                    obj.Shape = shape
+                finally:
+                    NurbsLODGui._editing = False
+                NurbsLODGui.refresh(obj)
+                done.append(1)
+
+            start, shown = _run_in_event_loop(change, lambda: bool(done))
+        else:
+
+            def change():
+                obj.Shape = shape
+
+            start, shown = _run_in_event_loop(change, lambda: not NurbsLODGui.is_pending(obj))
+        meter.stop()
+        results[mode] = (meter.longest_ms(before=shown), shown - start)
+    NurbsLODGui.disable_adaptive_display(obj)
+    return results
+
+
 def _models(directory):
     import Part
 
@@ -186,6 +226,7 @@ def _run():
         import gui_testing as gt
 
         rows = []
+        refreshes = []
         for name, shape in _models(directory):
             document, obj, view = gt.open_shape(shape, "BenchOverlay")
             for kind in KINDS:
@@ -193,6 +234,8 @@ def _run():
                 rows.append((name, kind, results))
                 print("{} {}: {}".format(name, kind, results))
                 sys.stdout.flush()
+            refreshes.append((name, _measure_refresh(obj)))
+            print("{} adaptive display refresh: {}".format(name, refreshes[-1][1]))
             gt.close(document)
 
         print(
@@ -218,6 +261,20 @@ def _run():
                 gui["until_shown_ms"] / worker["until_shown_ms"], gui["seconds"],
                 worker["seconds"], worker["request_ms"], worker["build_ms"],
                 max(gui["first_draw_ms"], worker["first_draw_ms"])))
+        print(
+            "\nadaptive display, the object's shape changed (a recompute, undo): the longest "
+            "time (ms) the GUI\nthread is held until the new node is in, the shape re-read on "
+            "the GUI thread (before) or in a thread"
+        )
+        widths = (32, 10, 10, 6, 7, 7)
+        header = "| " + " | ".join("{:>%d}" % w for w in widths) + " |"
+        print(header.format("model", "GUI thread", "thread", "ratio", "in s", "in s"))
+        print(header.format("", "block ms", "block ms", "", "GUI", "thread"))
+        print("|" + "|".join("-" * (w + 2) for w in widths) + "|")
+        row = "| {:>32} | {:>10.1f} | {:>10.1f} | {:>6.1f} | {:>7.2f} | {:>7.2f} |"
+        for name, results in refreshes:
+            gui, worker = results["gui"], results["worker"]
+            print(row.format(name, gui[0], worker[0], gui[0] / worker[0], gui[1], worker[1]))
     except Exception:
         traceback.print_exc()
         code = 1
