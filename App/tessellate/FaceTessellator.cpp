@@ -146,6 +146,23 @@ struct BoundaryIndex {
         return {best, bestT};
     }
 
+    // Whether ring[i] is a point the clipper made on a boundary chord between two other points
+    // of that chord, turning nothing: where a chord runs within a step of a cell side, rounding
+    // can give it a vertex that no cut of a cell side made. The first pass may not see such a
+    // point (its rounding depends on the rest of the region), so the other face of the edge
+    // does not know it, and kept it would open the edge.
+    bool isCollinearOnChord(const Path& ring, std::size_t i) const {
+        const IntPoint& p = ring[i];
+        if (corners.count(keyOf(p.X, p.Y))) return false;
+        const int s = segmentAt(p, 1.5).first;
+        if (s < 0) return false;
+        const IntPoint& before = ring[(i + ring.size() - 1) % ring.size()];
+        const IntPoint& after = ring[(i + 1) % ring.size()];
+        const auto& chord = segments[s];
+        return segmentDistance(before, chord.a, chord.b).first <= 2.25 &&
+               segmentDistance(after, chord.a, chord.b).first <= 2.25;
+    }
+
     // The nearest polygon corner within `reach` steps, or (-1, -1).
     std::pair<int, int> cornerNear(const IntPoint& p, cInt reach) const {
         std::pair<int, int> best{-1, -1};
@@ -649,7 +666,10 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             std::vector<std::vector<IntegerPoint2>> integerRings;
             for (const Path& ring : rings) {
                 std::vector<IntegerPoint2> integerRing;
-                for (const IntPoint& p : ring) {
+                for (std::size_t i = 0; i < ring.size(); ++i) {
+                    const IntPoint& p = ring[i];
+                    if (ring.size() > 3 && !lines.isCorner(p) && index.isCollinearOnChord(ring, i))
+                        continue;
                     integerRing.push_back({p.X, p.Y});
                     ids.push_back(resolve(p));
                 }
