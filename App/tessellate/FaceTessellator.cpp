@@ -224,8 +224,13 @@ std::vector<std::vector<IntPoint>> FaceTessellator::integerBoundary(
     std::vector<std::vector<IntPoint>> out;
     for (const auto& loop : loops) {
         std::vector<IntPoint> path;
-        for (const auto& p : loop.points)
-            path.push_back(p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv));
+        // The frame is the first pass's box; a point that the second pass adds on a chord may
+        // round a step or two outside it, where every cell would cut it off (the face then
+        // skips a point its neighbour has: an open edge). It is held inside instead.
+        for (const auto& p : loop.points) {
+            const IntPoint q = p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+            path.push_back({std::clamp<cInt>(q.X, 0, kScale), std::clamp<cInt>(q.Y, 0, kScale)});
+        }
         out.push_back(std::move(path));
     }
     return out;
