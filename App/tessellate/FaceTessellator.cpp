@@ -659,6 +659,9 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             const Point3 position =
                 (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
             ++mesh.unmatchedCrossings;
+            if (const auto& origin = loop.origins[s.index]; origin.edge >= 0)
+                mesh.openCuts.push_back(
+                    {origin.edge, origin.segment, origin.use, position, p.X, p.Y});
             return ownVertex(p, (1 - t) * a.uv + t * b.uv, &position);
         }
         return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);
