@@ -25,7 +25,15 @@ struct FaceMesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise
     std::size_t cells = 0;
     std::size_t unmatchedCrossings = 0;  // boundary points no other face knows (open edges)
-    bool toleranceReached = true;        // false where the kd-tree hit its depth limit
+    // A cut of a cell side with a chord of an edge (its segment, for the use of the face that
+    // made it) that no other face knows: where and at which integer point of this face's frame.
+    struct OpenCut {
+        int edge = -1, segment = 0, use = 0;
+        Point3 position = Point3::Zero();
+        std::int64_t x = 0, y = 0;
+    };
+    std::vector<OpenCut> openCuts;
+    bool toleranceReached = true;  // false where the kd-tree hit its depth limit
 };
 
 }  // namespace nurbslod

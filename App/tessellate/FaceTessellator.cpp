@@ -146,6 +146,23 @@ struct BoundaryIndex {
         return {best, bestT};
     }
 
+    // Whether ring[i] is a point the clipper made on a boundary chord between two other points
+    // of that chord, turning nothing: where a chord runs within a step of a cell side, rounding
+    // can give it a vertex that no cut of a cell side made. The first pass may not see such a
+    // point (its rounding depends on the rest of the region), so the other face of the edge
+    // does not know it, and kept it would open the edge.
+    bool isCollinearOnChord(const Path& ring, std::size_t i) const {
+        const IntPoint& p = ring[i];
+        if (corners.count(keyOf(p.X, p.Y))) return false;
+        const int s = segmentAt(p, 1.5).first;
+        if (s < 0) return false;
+        const IntPoint& before = ring[(i + ring.size() - 1) % ring.size()];
+        const IntPoint& after = ring[(i + 1) % ring.size()];
+        const auto& chord = segments[s];
+        return segmentDistance(before, chord.a, chord.b).first <= 2.25 &&
+               segmentDistance(after, chord.a, chord.b).first <= 2.25;
+    }
+
     // The nearest polygon corner within `reach` steps, or (-1, -1).
     std::pair<int, int> cornerNear(const IntPoint& p, cInt reach) const {
         std::pair<int, int> best{-1, -1};
@@ -207,8 +224,13 @@ std::vector<std::vector<IntPoint>> FaceTessellator::integerBoundary(
     std::vector<std::vector<IntPoint>> out;
     for (const auto& loop : loops) {
         std::vector<IntPoint> path;
-        for (const auto& p : loop.points)
-            path.push_back(p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv));
+        // The frame is the first pass's box; a point that the second pass adds on a chord may
+        // round a step or two outside it, where every cell would cut it off (the face then
+        // skips a point its neighbour has: an open edge). It is held inside instead.
+        for (const auto& p : loop.points) {
+            const IntPoint q = p.exact ? IntPoint{p.x, p.y} : frame_->toInteger(p.uv);
+            path.push_back({std::clamp<cInt>(q.X, 0, kScale), std::clamp<cInt>(q.Y, 0, kScale)});
+        }
         out.push_back(std::move(path));
     }
     return out;
@@ -637,6 +659,9 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             const Point3 position =
                 (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
             ++mesh.unmatchedCrossings;
+            if (const auto& origin = loop.origins[s.index]; origin.edge >= 0)
+                mesh.openCuts.push_back(
+                    {origin.edge, origin.segment, origin.use, position, p.X, p.Y});
             return ownVertex(p, (1 - t) * a.uv + t * b.uv, &position);
         }
         return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);
@@ -649,7 +674,10 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             std::vector<std::vector<IntegerPoint2>> integerRings;
             for (const Path& ring : rings) {
                 std::vector<IntegerPoint2> integerRing;
-                for (const IntPoint& p : ring) {
+                for (std::size_t i = 0; i < ring.size(); ++i) {
+                    const IntPoint& p = ring[i];
+                    if (ring.size() > 3 && !lines.isCorner(p) && index.isCollinearOnChord(ring, i))
+                        continue;
                     integerRing.push_back({p.X, p.Y});
                     ids.push_back(resolve(p));
                 }

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -405,14 +406,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     });
 
-    // 4. every cut joins its edge's polyline, for both faces of the edge
-    {
-        std::map<std::pair<int, int>,
-                 std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>>
-            cuts;
-        for (int f = 0; f < faceCount; ++f)
-            for (const auto& c : crossings[f])
-                cuts[{c.edge, c.segment}].push_back({c.lambda, c.use, c.x, c.y});
+    // 4. every cut joins its edge's polyline, for both faces of the edge; returns the edges that
+    // gained a point
+    using CutList = std::vector<std::tuple<double, int, std::int64_t, std::int64_t>>;
+    auto joinCuts = [&](std::map<std::pair<int, int>, CutList>& cuts) {
+        std::set<int> changed;
         for (auto& [key, list] : cuts) {
             auto [e, k] = key;
             auto& poly = polylines[e];
@@ -426,55 +424,94 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             // their own points) gains nothing from the cut: the face that found it makes its own
             // point on the chord, which it may drop again (removeOpenBoundaryPoints).
             if (useCount == 1 || !sharedEnds) continue;
-            double lastLambda = -1;
+            auto& inserted = poly.inserted[k];
             for (auto& [lambda, use, x, y] : list) {
                 if (lambda <= 0 || lambda >= 1) continue;
-                if (lambda - lastLambda > 1e-9) {
-                    EdgePolyline::Inserted ins{lambda, std::vector<std::uint32_t>(useCount)};
-                    for (size_t u = 0; u < useCount; ++u) {
-                        if (sharedEnds && u > 0) {
-                            ins.vertices[u] = ins.vertices[0];
-                            continue;
-                        }
-                        ins.vertices[u] = static_cast<std::uint32_t>(positions.size());
-                        positions.push_back((1 - lambda) * positions[poly.vertices[u][k]] +
-                                            lambda * positions[poly.vertices[u][k + 1]]);
-                        offsets.push_back(std::max(offsets[poly.vertices[u][k]],
-                                                   offsets[poly.vertices[u][k + 1]]));
-                    }
-                    poly.inserted[k].push_back(std::move(ins));
-                    lastLambda = lambda;
+                auto at = std::lower_bound(
+                    inserted.begin(), inserted.end(), lambda - 1e-9,
+                    [](const EdgePolyline::Inserted& i, double l) { return i.lambda < l; });
+                if (at == inserted.end() || at->lambda - lambda > 1e-9) {
+                    // all uses share the segment's ends, so they share the point
+                    const auto id = static_cast<std::uint32_t>(positions.size());
+                    positions.push_back((1 - lambda) * positions[poly.vertices[0][k]] +
+                                        lambda * positions[poly.vertices[0][k + 1]]);
+                    offsets.push_back(
+                        std::max(offsets[poly.vertices[0][k]], offsets[poly.vertices[0][k + 1]]));
+                    at = inserted.insert(at, {lambda, std::vector<std::uint32_t>(useCount, id)});
+                    changed.insert(e);
                 }
                 // the side that found the cut places it exactly where its clipper did
-                exactPoints[{e, use, poly.inserted[k].back().vertices[use]}] = {x, y};
+                exactPoints[{e, use, at->vertices[use]}] = {x, y};
             }
         }
+        return changed;
+    };
+    {
+        std::map<std::pair<int, int>, CutList> cuts;
+        for (int f = 0; f < faceCount; ++f)
+            for (const auto& c : crossings[f])
+                cuts[{c.edge, c.segment}].push_back({c.lambda, c.use, c.x, c.y});
+        joinCuts(cuts);
     }
 
     // 5. second pass: cut and triangulate with the completed boundaries
     std::vector<FaceMesh> faceMeshes(faceCount);
     std::vector<char> fanned(faceCount, 0);
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    auto meshFace = [&](int f) {
         if (tessellators[f]) {
             try {
                 faceMeshes[f] = tessellators[f]->triangulate(boundaryOf(f), positions, offsets);
             } catch (const std::exception& e) {
                 failure[f] = e.what();
+                tessellators[f].reset();
             }
-            tessellators[f].reset();
         }
         // A face too thin for any cell to find area inside its loops is still meshed: a fan
         // over its boundary (a face must never be missing).
         if (thinFace[f] || (failure[f].empty() && faceMeshes[f].triangles.empty())) {
             faceMeshes[f] = fanOverBoundary(model.faces[f], boundaryOf(f, 2), positions);
             fanned[f] = 1;
+            tessellators[f].reset();
             failure[f].clear();
             if (faceMeshes[f].triangles.empty())
                 failure[f] = "no triangles inside the trimming loops";
         }
+    };
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        meshFace(f);
         const std::size_t n = ++done;
         if (options.progress) options.progress(n, static_cast<std::size_t>(faceCount));
     });
+
+    // 5b. The second pass cuts a boundary that has more points than the first one saw, and the
+    // clipper's rounding differs with them: a cell side can cut a shared chord where the first
+    // pass found nothing, which only that face knows (an open edge). Such cuts join their edge
+    // as in step 4 and both faces of the edge are cut again; a round or two leaves none.
+    for (int round = 0; round < 3; ++round) {
+        std::map<std::pair<int, int>, CutList> cuts;
+        for (int f = 0; f < faceCount; ++f)
+            for (const auto& cut : faceMeshes[f].openCuts) {
+                const auto& poly = polylines[cut.edge];
+                const Point3& a = positions[poly.vertices[cut.use][cut.segment]];
+                const Point3& b = positions[poly.vertices[cut.use][cut.segment + 1]];
+                const double length2 = (b - a).squaredNorm();
+                if (!(length2 > 0)) continue;
+                const double lambda = (cut.position - a).dot(b - a) / length2;
+                cuts[{cut.edge, cut.segment}].push_back({lambda, cut.use, cut.x, cut.y});
+            }
+        const std::set<int> changed = joinCuts(cuts);
+        if (changed.empty()) break;
+        std::vector<int> again;
+        std::vector<char> listed(faceCount, 0);
+        for (int e : changed)
+            for (const auto& use : uses[e])
+                if (tessellators[use.face] && !listed[use.face]) {
+                    listed[use.face] = 1;
+                    again.push_back(use.face);
+                }
+        tbb::parallel_for(0, static_cast<int>(again.size()), [&](int i) { meshFace(again[i]); });
+    }
+    tessellators.clear();
 
     // 6. one mesh: shared positions first, then each face's own points, in face order
     Mesh& mesh = result.mesh;
