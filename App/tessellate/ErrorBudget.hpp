@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+
 #include "tessellate/TessellationOptions.hpp"
 
 namespace nurbslod {
@@ -10,27 +12,94 @@ namespace nurbslod {
 //    trimming share to the approximation and 1/4 to the loop simplification (section 5.1);
 //  - shareGap: where the faces of a sloppy edge are at most this far apart, they share one
 //    vertex midway (off each surface by half of it); farther apart, each keeps its own.
-// Guaranteed: surface + trimming + shareGap/2 = 0.6 + 0.25 + 0.1 = 0.95 of the tolerance; the
-// last 0.05 is slack for what the bounds round (curve ends moved onto their vertices, fans of
-// faces too thin for a cell).
+//
+// What the verifier measures, per face and both ways: how far the face's triangles are from
+// the exact trimmed face (deviation), and how far the exact face is from its triangles (cover).
+//  - Inside the face a triangle over a kd-tree cell is within the cell's bound of the surface
+//    (CellErrorBound), both ways: the surface share.
+//  - At the boundary the triangles end at the chords of the trimming curves, within the
+//    trimming share of the exact curve; a triangle with a chord as a side is within the surface
+//    share of the surface piece it spans, whose border is within the trimming share of the
+//    chord. Deviation (a chord bulging past the curve) and cover (the curve bulging past the
+//    chord) each take at most the sum of the two.
+//  - The edge's points are off the surface by at most shareGap/2 (one vertex for two sloppy
+//    faces), which moves their triangles by no more.
+// So guaranteed mode keeps, for every face,
+//     surface + trimming + shareGap / 2 <= (1 - slack) tolerance,
+// slack = 0.05 for what the bounds round (curve ends moved onto their vertices, fans of faces
+// too thin for a cell, the weld of points 1e-2 T apart).
+//
+// Only the sum is fixed, so it is shared per face (forFace): the fixed split (surface 0.6,
+// trimming 0.25, shareGap/2 0.1) is for a face that the kd-tree has to split; a face whose
+// Bezier patches are already within `surfaceNeed` of any triangles over them (a plane: 0) takes
+// that for its surface and gives the rest to its trimming curves (a plane: 0.84). A B-rep edge
+// is discretised once for all its faces, so its chords take the smallest of its faces' trimming
+// shares (ModelTessellator); a free edge its face's own.
+//
+// One face of an edge need not limit it: where its trimming curve is a straight line in (u, v)
+// (CurveOnSurface::straightInParameterPlane; a cylinder's or a cone's circles), the surface
+// maps each (u, v) chord onto the curve itself, so a triangle with that chord as a side is
+// within the cell's bound of the exact face, both ways, as long as its corners are on the
+// surface: the points that cell sides add to the chord are then put onto that surface (on the
+// curve) instead of onto the 3D chord, and the face's sum is its surface share alone. The other
+// faces see the edge as a finer polygon with every point on the curve.
 struct ErrorBudget {
     double surface = 0;
     double lineApproximation = 0;
     double lineSimplification = 0;
     double shareGap = 0;
 
+    // The trimming share: the chord approximation and the loop simplification together.
+    double trimming() const { return lineApproximation + lineSimplification; }
+
+    // gamma = 3/4 of a trimming share to the chords, the rest to the simplification (paper
+    // section 5.1).
+    void setTrimming(double share) {
+        lineApproximation = 0.75 * share;
+        lineSimplification = 0.25 * share;
+    }
+
+    // The fixed split, for a face whose surface needs the kd-tree.
     static ErrorBudget of(double tolerance, ErrorMode mode) {
         ErrorBudget b;
         if (mode == ErrorMode::Guaranteed) {
             b.surface = 0.6 * tolerance;
-            b.lineApproximation = 0.75 * 0.25 * tolerance;
-            b.lineSimplification = 0.25 * 0.25 * tolerance;
+            b.setTrimming(0.25 * tolerance);
             b.shareGap = 0.2 * tolerance;
         } else {
             b.surface = tolerance;
-            b.lineApproximation = 0.75 * 0.75 * tolerance;
-            b.lineSimplification = 0.25 * 0.75 * tolerance;
+            b.setTrimming(0.75 * tolerance);
             b.shareGap = 0.5 * tolerance;
+        }
+        return b;
+    }
+
+    // The most a face's trimming curves can take: all but the share gap and the slack. In
+    // approximate mode the paper's measure is an estimate, not a sum of bounds; a plane's chords
+    // are measured exactly, so they may come as close to the tolerance as guaranteed mode's.
+    static double largestTrimming(double tolerance, ErrorMode mode) {
+        const ErrorBudget fixed = of(tolerance, mode);
+        return mode == ErrorMode::Guaranteed ? 0.95 * tolerance - 0.5 * fixed.shareGap
+                                             : 0.95 * tolerance;
+    }
+
+    // The split for one face whose triangles are within `surfaceNeed` of its surface without
+    // any kd-tree split beyond the Bezier spans (faceSurfaceNeed; a plane: 0). The surface
+    // share keeps a margin of 1e-2 of the tolerance over that need, so that rounding never
+    // makes the kd-tree split a plane. Where the need is more than the fixed surface share, the
+    // kd-tree splits, and the fixed split holds.
+    static ErrorBudget forFace(double tolerance, ErrorMode mode, double surfaceNeed) {
+        ErrorBudget b = of(tolerance, mode);
+        const double surface = surfaceNeed + 1e-2 * tolerance;
+        if (!(surfaceNeed >= 0) || surface >= b.surface) return b;
+        if (mode == ErrorMode::Guaranteed) {
+            b.surface = surface;
+            b.setTrimming(std::max(b.trimming(), largestTrimming(tolerance, mode) - surface));
+        } else if (surfaceNeed <= 0.05 * tolerance) {
+            // the approximate sources are not added (the surface share is the whole tolerance):
+            // only a face whose surface is all but flat gives its chords the largest share
+            b.surface = surface;
+            b.setTrimming(largestTrimming(tolerance, mode));
         }
         return b;
     }

@@ -17,6 +17,7 @@
 
 #include "tessellate/BoundaryFan.hpp"
 #include "tessellate/ErrorBudget.hpp"
+#include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/SurfaceProjection.hpp"
 #include "trim/EdgeDiscretizer.hpp"
@@ -68,6 +69,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     if (options.threads > 0)
         threads = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, options.threads);
+    // the fixed split: the share gap, and the surface share a face needing more is held to
     const ErrorBudget budget = ErrorBudget::of(options.tolerance, options.mode);
     const int faceCount = static_cast<int>(model.faces.size());
 
@@ -113,25 +115,67 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return CurveOnSurface(model.faces[u.face].surface, c.pcurve, c.first, c.last);
     };
 
-    // 1. every edge discretised once for all its faces (sections 4 and 5.1)
-    std::vector<EdgePolyline> polylines(model.edges.size());
-    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
-        if (uses[e].empty()) return;
+    // each face's share of the tolerance: what its surface does not need goes to its trimming
+    // curves (ErrorBudget::forFace)
+    std::vector<ErrorBudget> faceBudgets(faceCount, budget);
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        if (!failure[f].empty()) return;
+        try {
+            faceBudgets[f] =
+                ErrorBudget::forFace(options.tolerance, options.mode,
+                                     faceSurfaceNeed(model.faces[f], options.mode, budget.surface));
+        } catch (const std::exception&) {
+            // the kd-tree reports what is wrong with the face; until then the fixed split
+        }
+    });
+
+    // The use of an edge whose chords its face's cells bound (a curve straight in (u, v), see
+    // CurveOnSurface::straightInParameterPlane): the points that cell sides add to the edge's
+    // segments go onto that face's surface, i.e. onto the curve, so that its triangles are all
+    // within its surface share. Its chords then do not limit the edge's share. At most one use
+    // per edge: a point is on one surface's curve at the (u, v) it has there, not on two.
+    // Only a shared edge: a free one keeps the points cell sides add on its chords.
+    std::vector<int> curveUse(model.edges.size(), -1);
+    for (size_t e = 0; e < model.edges.size(); ++e)
+        if (uses[e].size() >= 2)
+            for (size_t k = 0; k < uses[e].size() && curveUse[e] < 0; ++k)
+                if (curveOnSurface(uses[e][k]).straightInParameterPlane())
+                    curveUse[e] = static_cast<int>(k);
+    // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
+    // sum must hold), leaving out the use whose cells bound its chords.
+    auto edgeBudget = [&](size_t e, bool withCurveUse) {
+        ErrorBudget edge = budget;
+        double trimming = ErrorBudget::largestTrimming(options.tolerance, options.mode);
+        for (size_t k = 0; k < uses[e].size(); ++k)
+            if (!withCurveUse || static_cast<int>(k) != curveUse[e])
+                trimming = std::min(trimming, faceBudgets[uses[e][k].face].trimming());
+        edge.setTrimming(trimming);
+        return edge;
+    };
+    auto discretize = [&](size_t e, const ErrorBudget& edge) {
         std::vector<CurveOnSurface> curves;
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
-        auto& poly = polylines[e];
         // A degenerated edge (a pole) is discretised like any other: on a true pole its points
         // coincide and their triangles vanish; on a sloppy one (a "pole" row spread over the
         // edge tolerance) they follow the surface instead of collapsing onto one vertex.
         // a free edge's every segment is an open edge of the mesh: as few as the bound allows
-        poly.params =
-            curves.size() == 1
-                ? discretizeEdgeByLongestChords(curves, budget.lineApproximation,
-                                                budget.lineSimplification)
-                : discretizeEdge(curves, budget.lineApproximation, budget.lineSimplification);
-        poly.uv.resize(curves.size());
-        for (size_t k = 0; k < curves.size(); ++k)
-            for (double s : poly.params) poly.uv[k].push_back(curves[k].uv(s));
+        return curves.size() == 1
+                   ? discretizeEdgeByLongestChords(curves, edge.lineApproximation,
+                                                   edge.lineSimplification)
+                   : discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
+    };
+
+    // 1. every edge discretised once for all its faces (sections 4 and 5.1)
+    std::vector<EdgePolyline> polylines(model.edges.size());
+    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+        if (uses[e].empty()) return;
+        auto& poly = polylines[e];
+        poly.params = discretize(e, edgeBudget(e, curveUse[e] >= 0));
+        poly.uv.resize(uses[e].size());
+        for (size_t k = 0; k < uses[e].size(); ++k) {
+            const auto curve = curveOnSurface(uses[e][k]);
+            for (double s : poly.params) poly.uv[k].push_back(curve.uv(s));
+        }
     });
 
     // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
@@ -267,8 +311,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
         return std::nullopt;
     };
-    for (size_t e = 0; e < model.edges.size(); ++e) {
-        if (uses[e].empty()) continue;
+    // the shared vertices of one edge; false where a point stays one per face (a sloppy edge)
+    auto shareVertices = [&](size_t e) {
         auto& poly = polylines[e];
         const auto [firstVertex, lastVertex] = endVertices[e];
         const size_t n = poly.params.size();
@@ -276,6 +320,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         poly.inserted.assign(n - 1, {});
         std::vector<CurveOnSurface> curves;
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
+        bool allShared = true;
         for (size_t k = 0; k < n; ++k) {
             const bool first = k == 0, last = k + 1 == n;
             if ((first && firstVertex >= 0) || (last && lastVertex >= 0)) {
@@ -300,6 +345,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     poly.uv[u][k] = common->uv[u];
                 }
             } else {
+                allShared = false;
                 for (size_t u = 0; u < points.size(); ++u) {
                     poly.vertices[u][k] = static_cast<std::uint32_t>(positions.size());
                     positions.push_back(points[u]);
@@ -307,6 +353,30 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 }
             }
         }
+        for (size_t u = 1; u < uses[e].size(); ++u)
+            for (const int end : {0, static_cast<int>(n) - 1})
+                allShared &= poly.vertices[u][end] == poly.vertices[0][end];
+        return allShared;
+    };
+    for (size_t e = 0; e < model.edges.size(); ++e) {
+        if (uses[e].empty()) continue;
+        if (shareVertices(e) || curveUse[e] < 0) continue;
+        // A segment whose faces keep their own points gets no shared cuts: the face of the
+        // straight curve would find its cells' points on chords of the other faces' share.
+        // The edge is discretised again with every face's share (the ends keep their (u, v),
+        // moved onto the B-rep vertices above); the positions made for it are left unused.
+        auto& poly = polylines[e];
+        curveUse[e] = -1;
+        poly.params = discretize(e, edgeBudget(e, false));
+        for (size_t k = 0; k < uses[e].size(); ++k) {
+            const auto curve = curveOnSurface(uses[e][k]);
+            const Point2 first = poly.uv[k].front(), last = poly.uv[k].back();
+            poly.uv[k].clear();
+            for (double s : poly.params) poly.uv[k].push_back(curve.uv(s));
+            poly.uv[k].front() = first;
+            poly.uv[k].back() = last;
+        }
+        shareVertices(e);
     }
 
     // where each use sits in its edge's list of uses
@@ -395,7 +465,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (!failure[f].empty()) return;
         try {
             tessellators[f] =
-                std::make_unique<FaceTessellator>(model.faces[f], budget, options.mode);
+                std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f], options.mode);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
         } catch (const FaceWithoutArea&) {
             thinFace[f] = 1;
@@ -433,8 +503,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 if (at == inserted.end() || at->lambda - lambda > 1e-9) {
                     // all uses share the segment's ends, so they share the point
                     const auto id = static_cast<std::uint32_t>(positions.size());
-                    positions.push_back((1 - lambda) * positions[poly.vertices[0][k]] +
-                                        lambda * positions[poly.vertices[0][k + 1]]);
+                    if (const int c = curveUse[e]; c >= 0) {
+                        // on the straight curve's surface, hence on the curve
+                        const Point2 uv = (1 - lambda) * poly.uv[c][k] + lambda * poly.uv[c][k + 1];
+                        positions.push_back(
+                            model.faces[uses[e][c].face].surface.point(uv.x(), uv.y()));
+                    } else {
+                        positions.push_back((1 - lambda) * positions[poly.vertices[0][k]] +
+                                            lambda * positions[poly.vertices[0][k + 1]]);
+                    }
                     offsets.push_back(
                         std::max(offsets[poly.vertices[0][k]], offsets[poly.vertices[0][k + 1]]));
                     at = inserted.insert(at, {lambda, std::vector<std::uint32_t>(useCount, id)});

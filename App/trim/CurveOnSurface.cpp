@@ -3,7 +3,10 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <mutex>
+#include <vector>
 
 #include "geometry/SegmentDistance.hpp"
 
@@ -104,6 +107,32 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
     }
     result.bound = hull + result.residual;
     return result;
+}
+
+bool CurveOnSurface::straightInParameterPlane() const {
+    // The curve lies in the convex hull of its control points (positive weights): collinear
+    // control points put it on their line. Control points in order along the line make it run
+    // one way: by variation diminishing, no line across it meets the curve more than once.
+    std::vector<Point2> points;
+    for (const auto& pole : pcurve_->poles()) {
+        if (!(pole.z() > 0)) return false;
+        points.push_back(projectHomogeneous(pole));
+        if (!points.back().allFinite()) return false;
+    }
+    if (points.size() < 2) return false;
+    const Point2 direction = points.back() - points.front();
+    const double length = direction.norm();
+    if (!(length > 0)) return false;
+    const Point2 along = direction / length;
+    double last = -std::numeric_limits<double>::infinity();
+    for (const Point2& p : points) {
+        const Point2 d = p - points.front();
+        if (std::abs(along.x() * d.y() - along.y() * d.x()) > 1e-12 * length) return false;
+        const double t = along.dot(d);
+        if (t < last - 1e-12 * length) return false;
+        last = std::max(last, t);
+    }
+    return true;
 }
 
 }  // namespace nurbslod

@@ -1,0 +1,17 @@
+#pragma once
+
+#include "tessellate/TessellationOptions.hpp"
+#include "trim/TrimmedSurface.hpp"
+
+namespace nurbslod {
+
+// The surface error a face's triangles reach when the kd-tree splits it only at its Bezier
+// span borders: the largest cell bound (CellErrorBound, the trimmed-cell bound in guaranteed
+// mode, the paper's estimate in approximate mode) over the face's Bezier patches, each
+// restricted to the bounding box of the trimming curves' control points (which holds the
+// curves: positive weights). A plane gives 0; a face that the kd-tree has to split gives a value
+// above `cap`, returned as soon as one patch shows it (the rest is not measured). ErrorBudget::
+// forFace gives what a face does not need for its surface to its trimming curves.
+double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap);
+
+}  // namespace nurbslod

@@ -1,0 +1,143 @@
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <TopoDS.hxx>
+#include <cmath>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+#include <numbers>
+
+#include "occ/MeshVerifier.hpp"
+#include "occ/ModelImporter.hpp"
+#include "tessellate/ErrorBudget.hpp"
+#include "tessellate/FaceSurfaceNeed.hpp"
+#include "tessellate/ModelTessellator.hpp"
+#include "trim/CurveOnSurface.hpp"
+
+namespace nurbslod {
+namespace {
+
+TessellationResult tessellate(const TopoDS_Shape& shape, double tolerance) {
+    TessellationOptions options;
+    options.tolerance = tolerance;
+    return tessellateModel(occ::importModel(shape), options);
+}
+
+// A disc of radius r in the plane z = 0, bounded by one circle.
+TopoDS_Shape disc(double radius) {
+    const TopoDS_Edge circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp::XOY(), radius));
+    return BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), BRepBuilderAPI_MakeWire(circle)).Face();
+}
+
+// The least number of chords a circle of radius r needs when each may be `sag` off it.
+double chordsOfCircle(double radius, double sag) {
+    return std::numbers::pi / std::acos(1 - sag / radius);
+}
+
+// The fixed split is what a curved face keeps; a face that needs no kd-tree split (a plane)
+// gives its surface share to its trimming curves, and the sum stays within the tolerance.
+TEST(FaceErrorBudget, PlaneTakesTheSurfaceShareForItsCurves) {
+    const double t = 0.01;
+    const ErrorBudget fixed = ErrorBudget::of(t, ErrorMode::Guaranteed);
+    const ErrorBudget plane = ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.0);
+    EXPECT_GT(plane.trimming(), 3 * fixed.trimming());
+    EXPECT_LE(plane.surface + plane.trimming() + 0.5 * plane.shareGap, 0.95 * t + 1e-15);
+    const ErrorBudget curved = ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.7 * t);
+    EXPECT_DOUBLE_EQ(curved.surface, fixed.surface);
+    EXPECT_DOUBLE_EQ(curved.trimming(), fixed.trimming());
+    // a face that needs part of the surface share keeps exactly that part (and a margin)
+    const ErrorBudget flat = ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.3 * t);
+    EXPECT_NEAR(flat.surface + flat.trimming() + 0.5 * flat.shareGap, 0.95 * t, 1e-15);
+    EXPECT_GT(flat.trimming(), fixed.trimming());
+    // no need known (NaN): the fixed split
+    EXPECT_DOUBLE_EQ(ErrorBudget::forFace(t, ErrorMode::Guaranteed, std::nan("")).trimming(),
+                     fixed.trimming());
+}
+
+TEST(FaceErrorBudget, SurfaceNeedOfPlaneAndSphere) {
+    const double cap = 0.6 * 0.01;
+    const Model plane = occ::importModel(disc(5.0));
+    ASSERT_EQ(plane.faces.size(), 1u);
+    EXPECT_LE(faceSurfaceNeed(plane.faces[0], ErrorMode::Guaranteed, cap), 1e-9);
+    const Model sphere = occ::importModel(BRepPrimAPI_MakeSphere(5.0).Shape());
+    ASSERT_EQ(sphere.faces.size(), 1u);
+    EXPECT_GT(faceSurfaceNeed(sphere.faces[0], ErrorMode::Guaranteed, cap), cap);
+}
+
+// A cylinder's circles run along u = const or v = const lines of its (u, v) plane; a disc's
+// circle does not.
+TEST(FaceErrorBudget, CircleOfCylinderIsStraightInParameterPlane) {
+    const Model cylinder = occ::importModel(BRepPrimAPI_MakeCylinder(2.0, 7.0).Shape());
+    int straight = 0, curved = 0;
+    for (const auto& face : cylinder.faces)
+        for (const auto& loop : face.loops)
+            for (const auto& c : loop.curves)
+                (CurveOnSurface(face.surface, c.pcurve, c.first, c.last).straightInParameterPlane()
+                     ? straight
+                     : curved)++;
+    // the lateral face: two circles and the seam twice; each cap: one circle
+    EXPECT_EQ(straight, 4);
+    EXPECT_EQ(curved, 2);
+}
+
+// A disc alone: its circle is a free edge, every chord of it an open edge of the mesh. With the
+// plane's surface share its circle needs far fewer chords than the fixed split's trimming share
+// allows, and the face still verifies within the tolerance.
+TEST(FaceErrorBudget, PlanarFaceGetsFewerBoundaryPointsAndStaysWithinTolerance) {
+    const double radius = 5.0, t = 1e-3;
+    const TopoDS_Shape shape = disc(radius);
+    const auto result = tessellate(shape, t);
+    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
+    const auto report = occ::verifyMesh(shape, result.mesh, t);
+    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
+    const double fixedShare = ErrorBudget::of(t, ErrorMode::Guaranteed).trimming();
+    EXPECT_LT(double(report.openEdges), 0.7 * chordsOfCircle(radius, fixedShare))
+        << report.openEdges << " chords";
+    // and no fewer than its own share allows: the bound is not exceeded by construction
+    EXPECT_GE(double(report.openEdges), chordsOfCircle(radius, 0.95 * t));
+}
+
+// A plate with a round hole: the hole's circles are shared by a plane and the cylinder, on
+// which they are straight in (u, v). The plane's share decides their chords, and the points
+// that the cylinder's cells add go onto the circle, not onto the chords (which would put the
+// cylinder's triangles up to a chord's error off its surface); the solid stays closed and
+// within the tolerance.
+TEST(FaceErrorBudget, HoleSharedByPlaneAndCylinderIsClosedAndWithinTolerance) {
+    const double radius = 3.0;
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(-10, -10, 0), 20, 20, 4).Shape();
+    const TopoDS_Shape hole =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp::DZ()), radius, 6).Shape();
+    BRepAlgoAPI_Cut cut(box, hole);
+    ASSERT_TRUE(cut.IsDone());
+    const TopoDS_Shape plate = cut.Shape();
+    for (const double t : {2e-3, 2e-4}) {
+        const auto result = tessellate(plate, t);
+        ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
+        const auto report = occ::verifyMesh(plate, result.mesh, t);
+        EXPECT_TRUE(report.pass) << "T " << t << " max dev " << report.maxDev << " cover "
+                                 << report.maxCover;
+        EXPECT_EQ(report.openEdges, 0u) << "T " << t;
+        EXPECT_TRUE(report.facesMissing.empty());
+        // every point of the top rim is on the circle: none on a chord inside it
+        std::size_t onCircle = 0, onChord = 0;
+        for (const Point3& p : result.mesh.positions) {
+            if (std::abs(p.z() - 4) > 1e-9) continue;
+            const double off = radius - std::hypot(p.x(), p.y());
+            if (std::abs(off) < 1e-6 * radius)
+                ++onCircle;
+            else if (off > 0)
+                ++onChord;
+        }
+        EXPECT_GT(onCircle, 3u) << "T " << t;
+        EXPECT_EQ(onChord, 0u) << "T " << t;
+    }
+}
+
+}  // namespace
+}  // namespace nurbslod
