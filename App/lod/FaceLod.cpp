@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "lod/CollapsedCornerNormals.hpp"
+#include "lod/CollapsedPoleRows.hpp"
 #include "lod/InterpolatedNormalError.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
@@ -113,7 +114,19 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         } else if (tessellation.mesh.triangles.empty()) {
             result.failure = "no triangles";
         } else {
-            result.lod = toFaceLod(tessellation.mesh, tolerance, single.faces.front());
+            // Normals (drawn and measured) of the face as the B-rep declares it: a pole where a
+            // degenerated edge ends it, though the file's surface row is spread a little.
+            int collapsedRows = 0;
+            const TrimmedSurface shaded =
+                withPoleRowsCollapsed(single, single.faces.front(), &collapsedRows);
+            Mesh& mesh = tessellation.mesh;
+            if (collapsedRows > 0 && mesh.parameters.size() == mesh.normals.size()) {
+                const double outwards = shaded.reversed ? -1.0 : 1.0;
+                for (std::size_t k = 0; k < mesh.normals.size(); ++k)
+                    mesh.normals[k] = outwards * shaded.surface.normal(mesh.parameters[k].x(),
+                                                                       mesh.parameters[k].y());
+            }
+            result.lod = toFaceLod(mesh, tolerance, shaded);
         }
     } catch (const Standard_Failure& failure) {
         result.failure = std::string("OpenCASCADE failed: ") + failure.GetMessageString();
