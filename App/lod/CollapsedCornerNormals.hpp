@@ -6,13 +6,14 @@
 namespace nurbslod::gui {
 
 // Display normals at corners where the surface (nearly) collapses. At a degenerate edge that
-// is not quite a point (real files: an edge of 0.0013 mm on corpus trj7 faces 170 and 174),
-// one derivative is about 1e-4 of the other, BSplineSurface::normal takes the normal where it
-// is asked, and that is the normal of a sliver a hundredth of a millimetre wide in which the
-// surface turns by 85 degrees. Drawn at the vertex and interpolated across triangles of
-// several millimetres, it shades them up to 70 degrees off (appearance paper, section 4.1), at
-// every level: the tessellator refines for distance, which the sliver does not spoil. At a
-// true pole the limit normal is one of many where the surface is a cone's tip.
+// is not quite a point (an edge of 0.0013 mm, as on corpus trj7 faces 170 and 174 before
+// CollapsedPoleRows collapses their row of control points for the display), one derivative is about
+// 1e-4 of the other, BSplineSurface::normal takes the normal where it is asked, and that is the
+// normal of a sliver a hundredth of a millimetre wide in which the surface turns by 85 degrees.
+// Drawn at the vertex and interpolated across triangles of several millimetres, it shades them up
+// to 70 degrees off (appearance paper, section 4.1), at every level: the tessellator refines for
+// distance, which the sliver does not spoil. At a true pole the limit normal is one of many where
+// the surface is a cone's tip.
 //
 // So each triangle gets its own normal at such a corner: of the vertex's normal and the exact
 // normals 1/16, 1/8, 1/4 and 1/2 of the way from the corner to the middle of the opposite
