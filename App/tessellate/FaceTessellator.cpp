@@ -10,6 +10,7 @@
 
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
+#include "tessellate/CellTriangulation.hpp"
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 
@@ -249,7 +250,9 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 node.full = true;
                 node.region.clear();
             } else {
-                node.region = clip(node.region, r, true);
+                // Clipped to the cell grown by the margin, not to the cell: a child shares sides
+                // with its parent, and its margin beyond them must still be there to be covered.
+                node.region = clip(node.region, {r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, true);
                 bool any = false;
                 for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
                 if (!any) continue;  // outside the trimmed region: neither leaf nor parent
@@ -659,6 +662,12 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                 // a whole cell without neighbours' points: its two triangles (section 7)
                 mesh.triangles.push_back({ids[0], ids[1], ids[2]});
                 mesh.triangles.push_back({ids[0], ids[2], ids[3]});
+                continue;
+            }
+            if (leaf.full && integerRings.size() == 1) {
+                // a whole cell with hanging points: no cap that could fold in space
+                for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
+                    mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
                 continue;
             }
             const Triangulation triangulation = triangulatePolygon(integerRings);
