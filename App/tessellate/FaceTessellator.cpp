@@ -10,6 +10,7 @@
 
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
+#include "tessellate/CellTriangulation.hpp"
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 
@@ -57,6 +58,24 @@ bool coversWithMargin(const Paths& region, const Rect& r) {
         if ((p.X != grown.x0 && p.X != grown.x1) || (p.Y != grown.y0 && p.Y != grown.y1))
             return false;
     return true;
+}
+
+// The error a full cell (inside the trimmed region with a margin) may spend on its surface.
+// In guaranteed mode the verifier measures both ways: from each mesh point to the face, and
+// from each face point to the mesh. A full cell's triangles have every corner on the surface at
+// a parameter on the cell's sides (its corners and its neighbours', none on a trimming curve
+// nor shared with another face), so the triangle point at (u, v) in the cell is within
+// untrimmed() of S(u, v), and S(u, v) is a point of the face, as the whole cell lies inside the
+// trimmed region: both ways the distance is at most the cell bound. None of the trimming share
+// (chords and their simplification) nor of the shared-edge gap is spent there: those errors
+// are measured on triangles that touch the boundary, which are in trimmed cells. So a full cell
+// may take the surface share plus both trimming shares plus the half gap (0.95 of the
+// tolerance with ErrorBudget::of) and keep the same slack; a trimmed cell keeps the surface
+// share. The approximate mode promises nothing and keeps its surface share everywhere.
+double wholeCellTarget(const ErrorBudget& budget, ErrorMode mode) {
+    if (mode != ErrorMode::Guaranteed) return budget.surface;
+    return budget.surface + budget.lineApproximation + budget.lineSimplification +
+           0.5 * budget.shareGap;
 }
 
 // Squared distance from p to segment ab, and the parameter of the nearest point.
@@ -271,7 +290,9 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 node.full = true;
                 node.region.clear();
             } else {
-                node.region = clip(node.region, r, true);
+                // Clipped to the cell grown by the margin, not to the cell: a child shares sides
+                // with its parent, and its margin beyond them must still be there to be covered.
+                node.region = clip(node.region, {r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, true);
                 bool any = false;
                 for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
                 if (!any) continue;  // outside the trimmed region: neither leaf nor parent
@@ -324,11 +345,12 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                                               local(high.x(), breaksU[su], breaksU[su + 1]),
                                               local(low.y(), breaksV[sv], breaksV[sv + 1]),
                                               local(high.y(), breaksV[sv], breaksV[sv + 1]));
-        const CellErrorBound bound = cellErrorBound(piece, mode_, budget_.surface, !node.full);
+        const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
+        const CellErrorBound bound = cellErrorBound(piece, mode_, target, !node.full);
         const double error = mode_ == ErrorMode::Approximate
                                  ? bound.interior + bound.twist
                                  : (node.full ? bound.untrimmed() : bound.trimmed());
-        if (error <= budget_.surface) {
+        if (error <= target) {
             leaves_[node.index].leaf = true;
             continue;
         }
@@ -687,6 +709,12 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                 // a whole cell without neighbours' points: its two triangles (section 7)
                 mesh.triangles.push_back({ids[0], ids[1], ids[2]});
                 mesh.triangles.push_back({ids[0], ids[2], ids[3]});
+                continue;
+            }
+            if (leaf.full && integerRings.size() == 1) {
+                // a whole cell with hanging points: no cap that could fold in space
+                for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
+                    mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
                 continue;
             }
             const Triangulation triangulation = triangulatePolygon(integerRings);
