@@ -167,16 +167,67 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1)
     std::vector<EdgePolyline> polylines(model.edges.size());
-    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+    auto discretizeOnce = [&](size_t e) {
         if (uses[e].empty()) return;
         auto& poly = polylines[e];
         poly.params = discretize(e, edgeBudget(e, curveUse[e] >= 0));
-        poly.uv.resize(uses[e].size());
+        poly.uv.assign(uses[e].size(), {});
         for (size_t k = 0; k < uses[e].size(); ++k) {
             const auto curve = curveOnSurface(uses[e][k]);
             for (double s : poly.params) poly.uv[k].push_back(curve.uv(s));
         }
-    });
+    };
+    tbb::parallel_for(size_t(0), model.edges.size(), discretizeOnce);
+
+    // 1b. A face that gave its surface share to its trimming curves has longer chords; on a
+    // strip narrower than their sag (trj7_b1-ec-214.stp faces 54 and 86: planes 0.08 mm wide at
+    // T = 0.36 mm) the chords of its two sides cross, the loop repair of section 5.1 cuts the
+    // strip away, and its neighbours' edges stay open. Such a face takes the fixed split back
+    // and its edges are discretised again (their share is the smallest of their faces').
+    auto chordsCross = [&](int f) {
+        struct Segment {
+            Point2 a, b;
+        };
+        std::vector<Segment> segments;
+        const auto& face = model.faces[f];
+        for (int l = 0; l < int(face.loops.size()); ++l)
+            for (int c = 0; c < int(face.loops[l].curves.size()); ++c) {
+                const int e = face.loops[l].curves[c].edge;
+                for (size_t u = 0; u < uses[e].size(); ++u)
+                    if (uses[e][u].face == f && uses[e][u].loop == l && uses[e][u].curve == c)
+                        for (size_t k = 0; k + 1 < polylines[e].uv[u].size(); ++k)
+                            segments.push_back({polylines[e].uv[u][k], polylines[e].uv[u][k + 1]});
+            }
+        auto side = [](const Point2& a, const Point2& b, const Point2& p) {
+            const double cross = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
+            return (cross > 0) - (cross < 0);
+        };
+        // proper crossings only: segments that share an end (consecutive ones, loops that
+        // touch at a vertex) do not count
+        for (size_t i = 0; i < segments.size(); ++i)
+            for (size_t j = i + 1; j < segments.size(); ++j) {
+                const Segment &s = segments[i], &t = segments[j];
+                if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
+                if (side(s.a, s.b, t.a) * side(s.a, s.b, t.b) < 0 &&
+                    side(t.a, t.b, s.a) * side(t.a, t.b, s.b) < 0)
+                    return true;
+            }
+        return false;
+    };
+    for (int round = 0; round < 2; ++round) {
+        std::set<int> again;
+        for (int f = 0; f < faceCount; ++f)
+            if (failure[f].empty() && faceBudgets[f].trimming() > budget.trimming() &&
+                chordsCross(f)) {
+                faceBudgets[f] = budget;
+                const auto& face = model.faces[f];
+                for (const auto& loop : face.loops)
+                    for (const auto& curve : loop.curves) again.insert(curve.edge);
+            }
+        if (again.empty()) break;
+        const std::vector<int> edges(again.begin(), again.end());
+        tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
+    }
 
     // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
     // Which B-rep vertex sits at which end of the edge's parameter range is read from the
