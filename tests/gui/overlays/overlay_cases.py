@@ -246,9 +246,10 @@ def test_stripes_come_from_exact_normals_not_facets(ctx):
     ctx.show_only("G2")
     obj = ctx.objects["G2"]
     images, triangles = {}, {}
-    # fine and coarse 20 times apart: about 7000 and 400 triangles with the tighter guaranteed
-    # cell bound (2e-4 and 4e-3 gave as many before it)
-    fine, coarse = 1e-4, 2e-3
+    # fine and coarse 20 times apart: about 7000 and 400 triangles since full kd-tree cells
+    # take the whole budget (1e-4 and 2e-3 gave as many before it, 2e-4 and 4e-3 before the
+    # tighter guaranteed cell bound)
+    fine, coarse = 7e-5, 1.4e-3
     for relative in (fine, coarse):
         options = dict(count=36, direction=(1, -1, 0), relative=relative)
         triangles[relative] = NurbsLODOverlays.set_overlay(obj, "zebra", **options)["triangles"]
