@@ -76,6 +76,17 @@ int spanIndex(const std::vector<double>& breaks, double t) {
 }
 }  // namespace
 
+BezierPatch BezierPatchGrid::piece(int spanU, int spanV, double u0, double u1, double v0,
+                                   double v1) const {
+    auto local = [](double t, double a, double b) {
+        return std::clamp((t - a) / (b - a), 0.0, 1.0);
+    };
+    const double a0 = breaksU_[spanU], a1 = breaksU_[spanU + 1];
+    const double b0 = breaksV_[spanV], b1 = breaksV_[spanV + 1];
+    return patch(spanU, spanV)
+        .restricted(local(u0, a0, a1), local(u1, a0, a1), local(v0, b0, b1), local(v1, b0, b1));
+}
+
 int BezierPatchGrid::spanIndexU(double u) const {
     return spanIndex(breaksU_, u);
 }

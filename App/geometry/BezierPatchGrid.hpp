@@ -21,6 +21,10 @@ public:
         return patches_[spanU * spansV() + spanV];
     }
 
+    // The patch of span (spanU, spanV) restricted to [u0, u1] x [v0, v1] (the surface's
+    // parameters, clamped to the span).
+    BezierPatch piece(int spanU, int spanV, double u0, double u1, double v0, double v1) const;
+
     // The span index containing t (clamped to the domain).
     int spanIndexU(double u) const;
     int spanIndexV(double v) const;

@@ -43,6 +43,12 @@ struct CellErrorBound {
     double untrimmed() const { return spreadToEdges + twist; }
     // Bound for triangles with corners anywhere in the cell (trimming points).
     double trimmed() const { return spread + twist; }
+    // What the kd-tree compares with its target: in mode Approximate the paper's estimate
+    // (interior + twist), otherwise the bound for a cell the trimming curves may cross or not.
+    double measure(ErrorMode mode, bool trimmedCell) const {
+        if (mode == ErrorMode::Approximate) return interior + twist;
+        return trimmedCell ? trimmed() : untrimmed();
+    }
 };
 
 // Conservative (mode Guaranteed): from the control net of E = (N - w B) / w written in the

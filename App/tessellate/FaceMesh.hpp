@@ -24,7 +24,6 @@ struct FaceMesh {
     std::vector<Vertex> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // into vertices, counter-clockwise
     std::size_t cells = 0;
-    std::size_t unmatchedCrossings = 0;  // boundary points no other face knows (open edges)
     // A cut of a cell side with a chord of an edge (its segment, for the use of the face that
     // made it) that no other face knows: where and at which integer point of this face's frame.
     struct OpenCut {

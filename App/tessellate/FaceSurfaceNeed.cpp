@@ -29,9 +29,6 @@ double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap) {
     u0 = std::max(u0, breaksU.front()), u1 = std::min(u1, breaksU.back());
     v0 = std::max(v0, breaksV.front()), v1 = std::min(v1, breaksV.back());
     if (!(u1 > u0) || !(v1 > v0)) return kUnknown;
-    auto local = [](double t, double a, double b) {
-        return std::clamp((t - a) / (b - a), 0.0, 1.0);
-    };
     double need = 0;
     for (int su = patches.spanIndexU(u0); su <= patches.spanIndexU(u1); ++su) {
         const double a0 = std::max(u0, breaksU[su]), a1 = std::min(u1, breaksU[su + 1]);
@@ -39,13 +36,9 @@ double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap) {
         for (int sv = patches.spanIndexV(v0); sv <= patches.spanIndexV(v1); ++sv) {
             const double b0 = std::max(v0, breaksV[sv]), b1 = std::min(v1, breaksV[sv + 1]);
             if (!(b1 > b0)) continue;
-            const BezierPatch piece = patches.patch(su, sv).restricted(
-                local(a0, breaksU[su], breaksU[su + 1]), local(a1, breaksU[su], breaksU[su + 1]),
-                local(b0, breaksV[sv], breaksV[sv + 1]), local(b1, breaksV[sv], breaksV[sv + 1]));
+            const BezierPatch piece = patches.piece(su, sv, a0, a1, b0, b1);
             // the kd-tree's measure of a cell that the trimming curves may cross (the larger one)
-            const CellErrorBound bound = cellErrorBound(piece, mode, cap, true);
-            const double error =
-                mode == ErrorMode::Approximate ? bound.interior + bound.twist : bound.trimmed();
+            const double error = cellErrorBound(piece, mode, cap, true).measure(mode, true);
             if (!(error <= cap)) return kUnknown;
             need = std::max(need, error);
         }

@@ -279,8 +279,6 @@ void FaceTessellator::buildKdTree(const Paths& region) {
     std::vector<Node> stack;
     leaves_.push_back({{0, 0, kScale, kScale}});
     stack.push_back({{0, 0, kScale, kScale}, false, region, 0, 0});
-    const auto& breaksU = patches_.breakpointsU();
-    const auto& breaksV = patches_.breakpointsV();
     while (!stack.empty()) {
         Node node = std::move(stack.back());
         stack.pop_back();
@@ -337,20 +335,10 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const Point2 low = frame_->toParameter(r.x0, r.y0), high = frame_->toParameter(r.x1, r.y1);
         const Point2 middle = 0.5 * (low + high);
         const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
-        auto local = [](double t, double a, double b) {
-            return std::clamp((t - a) / (b - a), 0.0, 1.0);
-        };
-        const BezierPatch piece =
-            patches_.patch(su, sv).restricted(local(low.x(), breaksU[su], breaksU[su + 1]),
-                                              local(high.x(), breaksU[su], breaksU[su + 1]),
-                                              local(low.y(), breaksV[sv], breaksV[sv + 1]),
-                                              local(high.y(), breaksV[sv], breaksV[sv + 1]));
+        const BezierPatch piece = patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y());
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const CellErrorBound bound = cellErrorBound(piece, mode_, target, !node.full);
-        const double error = mode_ == ErrorMode::Approximate
-                                 ? bound.interior + bound.twist
-                                 : (node.full ? bound.untrimmed() : bound.trimmed());
-        if (error <= target) {
+        if (bound.measure(mode_, !node.full) <= target) {
             leaves_[node.index].leaf = true;
             continue;
         }
@@ -680,7 +668,6 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             const auto& b = loop.points[(s.index + 1) % loop.points.size()];
             const Point3 position =
                 (1 - t) * sharedPositions[a.vertex] + t * sharedPositions[b.vertex];
-            ++mesh.unmatchedCrossings;
             if (const auto& origin = loop.origins[s.index]; origin.edge >= 0)
                 mesh.openCuts.push_back(
                     {origin.edge, origin.segment, origin.use, position, p.X, p.Y});
