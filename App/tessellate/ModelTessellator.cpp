@@ -13,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include "tessellate/BoundaryFan.hpp"
@@ -107,6 +108,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (int c = 0; c < int(face.loops[l].curves.size()); ++c)
                 uses[face.loops[l].curves[c].edge].push_back({f, l, c});
     }
+    // where each use sits in its edge's list of uses
+    std::map<std::tuple<int, int, int>, int> useIndex;
+    for (size_t e = 0; e < uses.size(); ++e)
+        for (size_t u = 0; u < uses[e].size(); ++u)
+            useIndex[{uses[e][u].face, uses[e][u].loop, uses[e][u].curve}] = static_cast<int>(u);
+
     auto curveOf = [&](const EdgeUse& u) -> const TrimCurve& {
         return model.faces[u.face].loops[u.loop].curves[u.curve];
     };
@@ -167,15 +174,19 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1)
     std::vector<EdgePolyline> polylines(model.edges.size());
-    auto discretizeOnce = [&](size_t e) {
-        if (uses[e].empty()) return;
+    // each use's (u, v) at the edge's parameters
+    auto sampleUses = [&](size_t e) {
         auto& poly = polylines[e];
-        poly.params = discretize(e, edgeBudget(e, curveUse[e] >= 0));
         poly.uv.assign(uses[e].size(), {});
         for (size_t k = 0; k < uses[e].size(); ++k) {
             const auto curve = curveOnSurface(uses[e][k]);
             for (double s : poly.params) poly.uv[k].push_back(curve.uv(s));
         }
+    };
+    auto discretizeOnce = [&](size_t e) {
+        if (uses[e].empty()) return;
+        polylines[e].params = discretize(e, edgeBudget(e, curveUse[e] >= 0));
+        sampleUses(e);
     };
     tbb::parallel_for(size_t(0), model.edges.size(), discretizeOnce);
 
@@ -192,11 +203,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const auto& face = model.faces[f];
         for (int l = 0; l < int(face.loops.size()); ++l)
             for (int c = 0; c < int(face.loops[l].curves.size()); ++c) {
-                const int e = face.loops[l].curves[c].edge;
-                for (size_t u = 0; u < uses[e].size(); ++u)
-                    if (uses[e][u].face == f && uses[e][u].loop == l && uses[e][u].curve == c)
-                        for (size_t k = 0; k + 1 < polylines[e].uv[u].size(); ++k)
-                            segments.push_back({polylines[e].uv[u][k], polylines[e].uv[u][k + 1]});
+                const auto& uv = polylines[face.loops[l].curves[c].edge].uv[useIndex.at({f, l, c})];
+                for (size_t k = 0; k + 1 < uv.size(); ++k) segments.push_back({uv[k], uv[k + 1]});
             }
         auto side = [](const Point2& a, const Point2& b, const Point2& p) {
             const double cross = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
@@ -417,24 +425,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // The edge is discretised again with every face's share (the ends keep their (u, v),
         // moved onto the B-rep vertices above); the positions made for it are left unused.
         auto& poly = polylines[e];
+        std::vector<std::pair<Point2, Point2>> ends;
+        for (const auto& uv : poly.uv) ends.push_back({uv.front(), uv.back()});
         curveUse[e] = -1;
-        poly.params = discretize(e, edgeBudget(e, false));
-        for (size_t k = 0; k < uses[e].size(); ++k) {
-            const auto curve = curveOnSurface(uses[e][k]);
-            const Point2 first = poly.uv[k].front(), last = poly.uv[k].back();
-            poly.uv[k].clear();
-            for (double s : poly.params) poly.uv[k].push_back(curve.uv(s));
-            poly.uv[k].front() = first;
-            poly.uv[k].back() = last;
-        }
+        discretizeOnce(e);
+        for (size_t k = 0; k < uses[e].size(); ++k)
+            std::tie(poly.uv[k].front(), poly.uv[k].back()) = ends[k];
         shareVertices(e);
     }
-
-    // where each use sits in its edge's list of uses
-    std::map<std::tuple<int, int, int>, int> useIndex;
-    for (size_t e = 0; e < uses.size(); ++e)
-        for (size_t u = 0; u < uses[e].size(); ++u)
-            useIndex[{uses[e][u].face, uses[e][u].loop, uses[e][u].curve}] = static_cast<int>(u);
 
     // exact integer points of cuts, by (edge, use, shared vertex): the two sides of a seam are
     // two uses of one edge in one face and share the vertex, but not the (u, v) point
