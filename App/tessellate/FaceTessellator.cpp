@@ -78,6 +78,29 @@ double wholeCellTarget(const ErrorBudget& budget, ErrorMode mode) {
            0.5 * budget.shareGap;
 }
 
+// Where a cell the boundary crosses is split along `direction`: through the boundary point
+// nearest `at` within a quarter of the cell, if there is one. A split line elsewhere cuts the
+// boundary's segments at new points, which both faces of the edge then get: on a cylinder whose
+// circles the kd-tree columns cut between the edge's own points, the circle would carry both
+// sets. Through a boundary point, the line adds none there. The children's bounds are checked
+// as any others, so the guarantee does not depend on where the line goes.
+cInt throughBoundaryPoint(const Paths& region, const Rect& r, int direction, cInt at) {
+    const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
+    const cInt otherLo = direction == 0 ? r.y0 : r.x0, otherHi = direction == 0 ? r.y1 : r.x1;
+    cInt best = at, bestDistance = (hi - lo) / 4 + 1;
+    for (const Path& path : region)
+        for (const IntPoint& p : path) {
+            const cInt along = direction == 0 ? p.X : p.Y, across = direction == 0 ? p.Y : p.X;
+            // points on the grown margin are where the clip cut the boundary, not its own
+            if (across < otherLo || across > otherHi || along <= lo || along >= hi) continue;
+            if (std::abs(along - at) < bestDistance) {
+                best = along;
+                bestDistance = std::abs(along - at);
+            }
+        }
+    return best;
+}
+
 // Squared distance from p to segment ab, and the parameter of the nearest point.
 std::pair<double, double> segmentDistance(const IntPoint& p, const IntPoint& a, const IntPoint& b) {
     const double ax = double(a.X), ay = double(a.Y);
@@ -353,7 +376,11 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
         const cInt at =
             std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
-        split(direction, at);
+        // only where the loop is exact in (u, v) (ErrorBudget::forChordsOnSurface): elsewhere
+        // the line can land a step beside a point the second pass then finds
+        split(direction, node.full || budget_.trimming() > 0
+                             ? at
+                             : throughBoundaryPoint(node.region, r, direction, at));
     }
 }
 

@@ -27,6 +27,10 @@ namespace nurbslod {
 
 namespace {
 
+// An edge whose B-rep tolerance is below this fraction of the tolerance is exact for the
+// budget: a point on one face's curve is on the other's within it (lost in the 0.05 slack).
+constexpr double kExactEdge = 1e-3;
+
 // One face's use of an edge: which face, loop and trimming curve.
 struct EdgeUse {
     int face, loop, curve;
@@ -148,13 +152,37 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (size_t k = 0; k < uses[e].size() && curveUse[e] < 0; ++k)
                 if (curveOnSurface(uses[e][k]).straightInParameterPlane())
                     curveUse[e] = static_cast<int>(k);
+    // A face has no trimming error at all (ErrorBudget::forChordsOnSurface) where every curve
+    // of it is straight in (u, v) and the points added to it lie on its surface: it is its
+    // edge's curve use, or the edge is exact and its curve use is another face's (a line
+    // between two cylinders), or an exact pole (a sphere's tip).
+    std::vector<char> chordsOnSurface(faceCount, 0);
+    if (options.mode == ErrorMode::Guaranteed)
+        for (int f = 0; f < faceCount; ++f) {
+            if (!failure[f].empty()) continue;
+            const auto& face = model.faces[f];
+            bool all = !face.loops.empty();
+            for (int l = 0; all && l < int(face.loops.size()); ++l)
+                for (int c = 0; all && c < int(face.loops[l].curves.size()); ++c) {
+                    const int e = face.loops[l].curves[c].edge;
+                    const bool exact = model.edges[e].tolerance <= kExactEdge * options.tolerance;
+                    all = curveOnSurface({f, l, c}).straightInParameterPlane() &&
+                          ((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
+                           (model.edges[e].degenerated && exact));
+                }
+            if (!all) continue;
+            chordsOnSurface[f] = 1;
+            faceBudgets[f] = ErrorBudget::forChordsOnSurface(options.tolerance, options.mode);
+        }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
-    // sum must hold), leaving out the use whose cells bound its chords.
+    // sum must hold), leaving out the use whose cells bound its chords and the faces whose
+    // cells bound all their chords.
     auto edgeBudget = [&](size_t e, bool withCurveUse) {
         ErrorBudget edge = budget;
         double trimming = ErrorBudget::largestTrimming(options.tolerance, options.mode);
         for (size_t k = 0; k < uses[e].size(); ++k)
-            if (!withCurveUse || static_cast<int>(k) != curveUse[e])
+            if ((!withCurveUse || static_cast<int>(k) != curveUse[e]) &&
+                !chordsOnSurface[uses[e][k].face])
                 trimming = std::min(trimming, faceBudgets[uses[e][k].face].trimming());
         edge.setTrimming(trimming);
         return edge;
