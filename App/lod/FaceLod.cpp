@@ -108,6 +108,7 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         TessellationOptions options;
         options.tolerance = tolerance;
         options.mode = ErrorMode::Guaranteed;  // the screen-space error is a bound, not a guess
+        options.splitThroughBoundaryPoints = false;
         TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;

@@ -80,25 +80,34 @@ double wholeCellTarget(const ErrorBudget& budget, ErrorMode mode) {
 
 // Where a cell the boundary crosses is split along `direction`: through the boundary point
 // nearest `at` within a quarter of the cell, if there is one. A split line elsewhere cuts the
-// boundary's segments at new points, which both faces of the edge then get: on a cylinder whose
-// circles the kd-tree columns cut between the edge's own points, the circle would carry both
-// sets. Through a boundary point, the line adds none there. The children's bounds are checked
-// as any others, so the guarantee does not depend on where the line goes.
+// boundary's segments at new points, which both faces of the edge then get: on a cylinder the
+// kd-tree's columns would cut its circles between the edge's own points, and the circles would
+// carry both sets. Through a boundary point the line adds none there. A point on the cell's side
+// counts only where both ends of the line are on the boundary (the cylinder's two circles):
+// with one end inside the face, the neighbour across that side would split at its own boundary
+// point, and the two lines would end a hair apart on the side they share. The children's bounds
+// are checked like any others, so the guarantee does not depend on where the line goes.
 cInt throughBoundaryPoint(const Paths& region, const Rect& r, int direction, cInt at) {
     const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
     const cInt otherLo = direction == 0 ? r.y0 : r.x0, otherHi = direction == 0 ? r.y1 : r.x1;
-    cInt best = at, bestDistance = (hi - lo) / 4 + 1;
+    const cInt window = (hi - lo) / 4 + 1;
+    cInt inside = at, insideDistance = window, onSide = at, onSideDistance = window;
+    bool onLowSide = false, onHighSide = false;
     for (const Path& path : region)
         for (const IntPoint& p : path) {
             const cInt along = direction == 0 ? p.X : p.Y, across = direction == 0 ? p.Y : p.X;
             // points on the grown margin are where the clip cut the boundary, not its own
-            if (across < otherLo || across > otherHi || along <= lo || along >= hi) continue;
-            if (std::abs(along - at) < bestDistance) {
-                best = along;
-                bestDistance = std::abs(along - at);
+            if (along <= lo || along >= hi || across < otherLo || across > otherHi) continue;
+            const cInt distance = std::abs(along - at);
+            if (across == otherLo || across == otherHi) {
+                onLowSide |= across == otherLo;
+                onHighSide |= across == otherHi;
+                if (distance < onSideDistance) onSide = along, onSideDistance = distance;
+            } else if (distance < insideDistance) {
+                inside = along, insideDistance = distance;
             }
         }
-    return best;
+    return onLowSide && onHighSide && onSideDistance <= insideDistance ? onSide : inside;
 }
 
 // Squared distance from p to segment ab, and the parameter of the nearest point.
@@ -227,8 +236,12 @@ struct BoundaryIndex {
 }  // namespace
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
-                                 ErrorMode mode)
-    : face_(face), budget_(budget), mode_(mode), patches_(face.surface) {}
+                                 ErrorMode mode, bool splitThroughBoundaryPoints)
+    : face_(face),
+      budget_(budget),
+      mode_(mode),
+      splitThroughBoundaryPoints_(splitThroughBoundaryPoints),
+      patches_(face.surface) {}
 
 FaceTessellator::~FaceTessellator() = default;
 
@@ -376,9 +389,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
         const cInt at =
             std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
-        // only where the loop is exact in (u, v) (ErrorBudget::forChordsOnSurface): elsewhere
-        // the line can land a step beside a point the second pass then finds
-        split(direction, node.full || budget_.trimming() > 0
+        split(direction, node.full || !splitThroughBoundaryPoints_
                              ? at
                              : throughBoundaryPoint(node.region, r, direction, at));
     }

@@ -31,7 +31,8 @@ struct FaceWithoutArea : std::runtime_error {
 // triangulate() cuts and triangulates the leaves with the completed boundary.
 class FaceTessellator {
 public:
-    FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode);
+    FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode,
+                    bool splitThroughBoundaryPoints = true);
     ~FaceTessellator();
 
     // Throws std::runtime_error with the reason when the face cannot be tessellated.
@@ -57,6 +58,7 @@ private:
     const TrimmedSurface& face_;
     ErrorBudget budget_;
     ErrorMode mode_;
+    bool splitThroughBoundaryPoints_;
     BezierPatchGrid patches_;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;

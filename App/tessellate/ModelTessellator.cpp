@@ -541,8 +541,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
-            tessellators[f] =
-                std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f], options.mode);
+            tessellators[f] = std::make_unique<FaceTessellator>(
+                model.faces[f], faceBudgets[f], options.mode, options.splitThroughBoundaryPoints);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
         } catch (const FaceWithoutArea&) {
             thinFace[f] = 1;

@@ -14,6 +14,11 @@ struct TessellationOptions {
     double tolerance = 0;  // absolute, in model units; > 0
     ErrorMode mode = ErrorMode::Guaranteed;
     int threads = 0;  // 0: all cores
+    // Split a kd-tree cell that the boundary crosses through a boundary point near the middle
+    // rather than at the middle, so that the split line cuts no new point into the boundary
+    // there (FaceTessellator). The display's levels keep the plain halving, on which their
+    // normal bound near sloppy poles was checked.
+    bool splitThroughBoundaryPoints = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
