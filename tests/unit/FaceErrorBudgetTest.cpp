@@ -107,7 +107,7 @@ TEST(FaceErrorBudget, PlanarFaceGetsFewerBoundaryPointsAndStaysWithinTolerance) 
 // it spends the tolerance on its surface alone and does not limit its circles, and the kd-tree
 // splits its side through the circles' own points instead of between them. Its side then has
 // two triangles per chord of a circle: before, the circles carried the chords and the columns
-// both (1,020 triangles in all here, 516 now).
+// both (1,020 triangles in all here, 516 now; the side 260, 456 with plain halving).
 TEST(FaceErrorBudget, WholeCylinderSplitsThroughItsCirclesPoints) {
     const double radius = 3.0, t = 2e-3;
     const TopoDS_Shape shape = BRepPrimAPI_MakeCylinder(radius, 10.0).Shape();
@@ -128,6 +128,15 @@ TEST(FaceErrorBudget, WholeCylinderSplitsThroughItsCirclesPoints) {
     const double capShare = ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.0).trimming();
     EXPECT_LE(double(sideTriangles), 2 * 2 * std::ceil(chordsOfCircle(radius, 0.75 * capShare)) + 4)
         << sideTriangles << " triangles on the side";
+    // with plain halving the columns cut the circles between the chords' points
+    TessellationOptions halving;
+    halving.tolerance = t;
+    halving.splitThroughBoundaryPoints = false;
+    const auto halved = tessellateModel(model, halving);
+    std::size_t halvedSideTriangles = 0;
+    for (const auto face : halved.mesh.triangleFaces) halvedSideTriangles += face == side;
+    EXPECT_LT(double(sideTriangles), 0.8 * double(halvedSideTriangles))
+        << sideTriangles << " vs " << halvedSideTriangles;
     // the budget of such a face: no trimming share, the rest on its surface
     const ErrorBudget whole = ErrorBudget::forChordsOnSurface(t, ErrorMode::Guaranteed);
     EXPECT_EQ(whole.trimming(), 0.0);
