@@ -11,7 +11,9 @@ namespace nurbslod {
 //  - lineApproximation + lineSimplification: trimming curves to chords, gamma = 3/4 of the
 //    trimming share to the approximation and 1/4 to the loop simplification (section 5.1);
 //  - shareGap: where the faces of a sloppy edge are at most this far apart, they share one
-//    vertex midway (off each surface by half of it); farther apart, each keeps its own.
+//    vertex midway (off each surface by half of it). Farther apart, they share a point where
+//    their surfaces meet or come within the share gap (SurfaceMeeting), if one lies within the
+//    edge's tolerance of each face's own point; otherwise each keeps its own.
 //
 // What the verifier measures, per face and both ways: how far the face's triangles are from
 // the exact trimmed face (deviation), and how far the exact face is from its triangles (cover).
@@ -24,6 +26,16 @@ namespace nurbslod {
 //    chord) each take at most the sum of the two.
 //  - The edge's points are off the surface by at most shareGap/2 (one vertex for two sloppy
 //    faces), which moves their triangles by no more.
+//  - A point shared where the surfaces meet also moves the face's boundary inside its surface,
+//    by up to the edge's tolerance: the chords then run between the meeting points instead of
+//    the trimming curve's points. That is not bounded by the shares above; it is what the B-rep
+//    itself leaves open (the true edge lies within its tolerance of each trimming curve), and
+//    the verifier and meshjudge allow it: at a face's boundary they count the distance to the
+//    trimmed face less the largest tolerance of its edges, both ways. The distance to the
+//    untrimmed surface, which they count in full, stays within the shares: the meeting point is
+//    within shareGap/2 of it, and the chords between meeting points follow the curve where the
+//    surfaces meet, which the chords' parameters were chosen for only through the trimming
+//    curves. The verifier measures that sag; it is not proven.
 // So guaranteed mode keeps, for every face,
 //     surface + trimming + shareGap / 2 <= (1 - slack) tolerance,
 // slack = 0.05 for what the bounds round (curve ends moved onto their vertices, fans of faces

@@ -1,0 +1,52 @@
+#include "tessellate/SurfaceMeeting.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
+
+#include "tessellate/SurfaceProjection.hpp"
+
+namespace nurbslod {
+
+SurfaceMeeting findSurfaceMeeting(const std::vector<const BSplineSurface*>& surfaces,
+                                  const Point3& start, const std::vector<Point2>& starts,
+                                  int iterations) {
+    const auto count = static_cast<Eigen::Index>(surfaces.size());
+    SurfaceMeeting best{start, starts, std::vector<Point3>(surfaces.size()), 0};
+    best.offset = std::numeric_limits<double>::infinity();
+    Point3 point = start;
+    std::vector<Point2> uv = starts;
+    for (int iteration = 0; iteration <= iterations; ++iteration) {
+        // the feet of the current point and their tangent planes n . (x - foot) = 0
+        Eigen::MatrixXd normals(count, 3);
+        Eigen::VectorXd heights(count);
+        std::vector<Point3> feet(surfaces.size());
+        double offset = 0;
+        for (Eigen::Index s = 0; s < count; ++s) {
+            const SurfaceFoot foot = projectOntoSurface(*surfaces[s], point, uv[s]);
+            uv[s] = foot.uv;
+            feet[s] = foot.point;
+            offset = std::max(offset, (foot.point - point).norm());
+            const auto d = surfaces[s]->derivatives(foot.uv.x(), foot.uv.y());
+            Vector3 normal = d.du.cross(d.dv);
+            const double length = normal.norm();
+            normal = length > 0 ? Vector3(normal / length) : Vector3::Zero();
+            normals.row(s) = normal.transpose();
+            heights(s) = normal.dot(foot.point - point);
+        }
+        if (offset < best.offset) best = {point, uv, feet, offset};
+        if (iteration == iterations || !(offset > 0)) break;
+        // the shortest step onto every plane; normals less than about half a degree apart (the
+        // pivoted QR's relative threshold 1e-2 ~ sin 0.57 deg) count as one direction, so that
+        // nearly parallel planes give the midway step, not a leap along them
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> planes(normals.rows(), 3);
+        planes.setThreshold(1e-2);
+        planes.compute(normals);
+        const Eigen::Vector3d step = planes.solve(heights);
+        if (!step.allFinite()) break;
+        point += Vector3(step);
+    }
+    return best;
+}
+
+}  // namespace nurbslod
