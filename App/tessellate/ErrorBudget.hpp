@@ -11,9 +11,10 @@ namespace nurbslod {
 //  - lineApproximation + lineSimplification: trimming curves to chords, gamma = 3/4 of the
 //    trimming share to the approximation and 1/4 to the loop simplification (section 5.1);
 //  - shareGap: where the faces of a sloppy edge are at most this far apart, they share one
-//    vertex midway (off each surface by half of it). Farther apart, they share a point where
-//    their surfaces meet or come within the share gap (SurfaceMeeting), if one lies within the
-//    edge's tolerance of each face's own point; otherwise each keeps its own.
+//    vertex midway (off each surface by half of it); an edge's faces may widen that gap for
+//    it (withShareGap, below). Farther apart, they share a point where their surfaces meet or
+//    come within the share gap (SurfaceMeeting), if one lies within the edge's tolerance of
+//    each face's own point; otherwise each keeps its own.
 //
 // What the verifier measures, per face and both ways: how far the face's triangles are from
 // the exact trimmed face (deviation), and how far the exact face is from its triangles (cover).
@@ -25,7 +26,8 @@ namespace nurbslod {
 //    chord. Deviation (a chord bulging past the curve) and cover (the curve bulging past the
 //    chord) each take at most the sum of the two.
 //  - The edge's points are off the surface by at most shareGap/2 (one vertex for two sloppy
-//    faces), which moves their triangles by no more.
+//    faces; the face's own gap, which is the widest of its edges'), which moves their triangles
+//    by no more.
 //  - A point shared where the surfaces meet also moves the face's boundary inside its surface,
 //    by up to the edge's tolerance: the chords then run between the meeting points instead of
 //    the trimming curve's points. That is not bounded by the shares above; it is what the B-rep
@@ -55,6 +57,14 @@ namespace nurbslod {
 // surface: the points that cell sides add to the chord are then put onto that surface (on the
 // curve) instead of onto the 3D chord, and the face's sum is its surface share alone. The other
 // faces see the edge as a finer polygon with every point on the curve.
+//
+// The share gap, too, is per face (widenShareGap): a sloppy edge whose faces are g apart, with
+// the fixed shareGap < g, gets one vertex midway, g/2 off each surface (ModelTessellator measures
+// g along the edge, as it places those vertices). Each face of that edge then spends g/2 on its
+// shared points instead of shareGap/2 and gives the difference out of its trimming and surface
+// shares, so its sum above still holds. The kd-tree and the chords are then finer on those faces
+// only. A face keeps at least half of the fixed split's surface and trimming shares (or what
+// it had, if less), which bounds g (largestShareGap); a farther edge keeps one point per face.
 struct ErrorBudget {
     double surface = 0;
     double lineApproximation = 0;
@@ -107,6 +117,42 @@ struct ErrorBudget {
         if (mode != ErrorMode::Guaranteed) return b;
         b.surface = 0.95 * tolerance - 0.5 * b.shareGap;
         b.setTrimming(0);
+        return b;
+    }
+
+    // The share gap this face can take, giving out of its trimming and surface shares all but
+    // the floors above (guaranteed mode; the approximate one keeps its fixed gap).
+    double largestShareGap(double tolerance, ErrorMode mode) const {
+        if (mode != ErrorMode::Guaranteed) return shareGap;
+        const ErrorBudget fixed = of(tolerance, mode);
+        const double room = std::max(0.0, surface - 0.5 * fixed.surface) +
+                            std::max(0.0, trimming() - 0.5 * fixed.trimming());
+        return shareGap + 2 * room;
+    }
+
+    // This face with share gap `gap` (at most largestShareGap): the extra half gap comes first
+    // out of what the trimming got beyond the fixed split (a plane's widened chords), then out
+    // of the surface and trimming shares in proportion to their room above the floors. The sum
+    // surface + trimming + shareGap / 2 is unchanged.
+    ErrorBudget withShareGap(double gap, double tolerance, ErrorMode mode) const {
+        ErrorBudget b = *this;
+        double extra = 0.5 * (gap - shareGap);
+        if (!(extra > 0) || mode != ErrorMode::Guaranteed) return b;
+        const ErrorBudget fixed = of(tolerance, mode);
+        const double widened = std::min(extra, std::max(0.0, b.trimming() - fixed.trimming()));
+        b.setTrimming(b.trimming() - widened);
+        extra -= widened;
+        const double surfaceRoom = std::max(0.0, b.surface - 0.5 * fixed.surface);
+        const double trimmingRoom = std::max(0.0, b.trimming() - 0.5 * fixed.trimming());
+        double given = widened;
+        if (extra > 0 && surfaceRoom + trimmingRoom > 0) {
+            // never below the floors: a gap beyond largestShareGap is cut to it
+            const double take = std::min(1.0, extra / (surfaceRoom + trimmingRoom));
+            b.surface -= take * surfaceRoom;
+            b.setTrimming(b.trimming() - take * trimmingRoom);
+            given += take * (surfaceRoom + trimmingRoom);
+        }
+        b.shareGap = shareGap + 2 * given;
         return b;
     }
 

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -127,6 +128,69 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return CurveOnSurface(model.faces[u.face].surface, c.pcurve, c.first, c.last);
     };
 
+    // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
+    // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
+    // point near both surfaces then serves both faces. It is found by projecting onto each
+    // surface in turn and averaging the feet; each face takes its foot's (u, v), so the shared
+    // vertex is at most the edge's half share gap off each surface (the share budget), and the
+    // face's boundary moves inside its surface by no more than `reach` (at most the edge's own
+    // tolerance: how far the B-rep itself places the edge, which meshjudge and the verifier
+    // allow at a face's boundary).
+    struct CommonPoint {
+        Point3 point;
+        std::vector<Point2> uv;  // per use
+        double offset = 0;       // the largest distance to a foot
+    };
+    // The first iterate within halfGap of every surface, else the nearest one found (offset
+    // infinite if none stays within reach): with halfGap 0 it measures how far apart the
+    // faces are there.
+    auto commonPointOf = [&](std::size_t e, const std::vector<Point3>& own,
+                             const std::vector<Point2>& start, double halfGap, double reach) {
+        const std::size_t useCount = uses[e].size();
+        CommonPoint best{Point3::Zero(), {}, std::numeric_limits<double>::infinity()};
+        CommonPoint common{centroid(own), std::vector<Point2>(useCount)};
+        std::vector<Point3> feet(useCount);
+        for (int iteration = 0; iteration < 8; ++iteration) {
+            bool near = true;
+            common.offset = 0;
+            for (std::size_t u = 0; u < useCount; ++u) {
+                const SurfaceFoot foot = projectOntoSurface(model.faces[uses[e][u].face].surface,
+                                                            common.point, start[u]);
+                common.uv[u] = foot.uv;
+                feet[u] = foot.point;
+                common.offset = std::max(common.offset, (foot.point - common.point).norm());
+                near &= (foot.point - own[u]).norm() <= reach;
+            }
+            if (near && common.offset < best.offset) best = common;
+            if (near && common.offset <= halfGap) return common;
+            common.point = centroid(feet);
+        }
+        return best;
+    };
+
+    // Where the surfaces meet (SurfaceMeeting: Newton steps onto their tangent planes) if that
+    // is within halfGap of every surface and within the edge's tolerance of each face's own
+    // point; else the averaged projections of commonPointOf, held within the edge's tolerance
+    // and within the curves' spread plus `gap` of the own points (a broken file may give an
+    // edge a tolerance of kilometres). Where the Newton steps end farther off (faces that run
+    // side by side end them midway between the faces), the projections still find some points:
+    // bug33398.step's edge 762 (faces 0.68 T apart) leaves 6 more open edges at relative 1e-4
+    // without them.
+    auto nearestCommonPoint = [&](std::size_t e, const std::vector<Point3>& own,
+                                  const std::vector<Point2>& start, double halfGap, double gap) {
+        const std::size_t useCount = uses[e].size();
+        std::vector<const BSplineSurface*> surfaces(useCount);
+        for (std::size_t u = 0; u < useCount; ++u)
+            surfaces[u] = &model.faces[uses[e][u].face].surface;
+        const double tolerance = model.edges[e].tolerance;
+        const SurfaceMeeting meeting = findSurfaceMeeting(surfaces, centroid(own), start);
+        bool near = meeting.offset <= halfGap;
+        for (std::size_t u = 0; u < useCount; ++u)
+            near &= (meeting.feet[u] - own[u]).norm() <= tolerance;
+        if (near) return CommonPoint{meeting.point, meeting.uv, meeting.offset};
+        return commonPointOf(e, own, start, halfGap, std::min(tolerance, spread(own) + gap));
+    };
+
     // each face's share of the tolerance: what its surface does not need goes to its trimming
     // curves (ErrorBudget::forFace)
     std::vector<ErrorBudget> faceBudgets(faceCount, budget);
@@ -141,15 +205,79 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     });
 
+    // Per-edge share gap (ErrorBudget::withShareGap). Along each shared edge, the faces' gap is
+    // measured as the vertices are placed below (commonPointOf) at evenly spaced parameters;
+    // where it is over the fixed share gap and every face of the edge can give the difference
+    // out of its other shares, the edge takes it, with a margin of 1.2 for the points between
+    // the samples, and its faces spend that much. A point of the edge found farther off than
+    // its gap still stays one per face (shareVertices): the guarantee never rests on the
+    // samples.
+    std::vector<double> edgeShareGap(model.edges.size(), budget.shareGap);
+    if (options.mode == ErrorMode::Guaranteed) {
+        constexpr int samples = 32;
+        constexpr double margin = 1.2;
+        const double largestGap = 2 * 0.95 * options.tolerance;
+        std::vector<double> needed(model.edges.size(), 0);
+        tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+            if (uses[e].size() < 2 || model.edges[e].degenerated) return;
+            std::vector<CurveOnSurface> curves;
+            for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
+            double farthestOffset = 0;
+            for (int i = 1; i < samples && farthestOffset < largestGap; ++i) {
+                const double s = double(i) / samples;
+                std::vector<Point3> own;
+                std::vector<Point2> start;
+                for (const auto& c : curves) {
+                    own.push_back(c.point(s));
+                    start.push_back(c.uv(s));
+                }
+                if (spread(own) <= budget.shareGap) continue;  // shared as before
+                // a point with no common point within reach stays one per face whatever the
+                // gap; one where the surfaces meet within the fixed gap needs no more
+                if (const double offset =
+                        nearestCommonPoint(e, own, start, 0.5 * budget.shareGap, largestGap).offset;
+                    std::isfinite(offset))
+                    farthestOffset = std::max(farthestOffset, offset);
+            }
+            needed[e] = 2 * margin * farthestOffset;
+        });
+        std::vector<double> faceGap(faceCount, budget.shareGap);
+        for (size_t e = 0; e < model.edges.size(); ++e) {
+            if (!(needed[e] > budget.shareGap)) continue;
+            bool affordable = true;
+            for (const auto& u : uses[e])
+                affordable &= needed[e] <=
+                              faceBudgets[u.face].largestShareGap(options.tolerance, options.mode);
+            if (!affordable) continue;
+            edgeShareGap[e] = needed[e];
+            for (const auto& u : uses[e]) faceGap[u.face] = std::max(faceGap[u.face], needed[e]);
+        }
+        for (int f = 0; f < faceCount; ++f)
+            faceBudgets[f] =
+                faceBudgets[f].withShareGap(faceGap[f], options.tolerance, options.mode);
+    }
+    // a face's budget after a change of its other shares: its share gap kept where it can be,
+    // and its edges' gaps held to what it keeps
+    auto rebudget = [&](int f, const ErrorBudget& base) {
+        faceBudgets[f] =
+            base.withShareGap(faceBudgets[f].shareGap, options.tolerance, options.mode);
+        const auto& face = model.faces[f];
+        for (const auto& loop : face.loops)
+            for (const auto& curve : loop.curves)
+                edgeShareGap[curve.edge] =
+                    std::min(edgeShareGap[curve.edge], faceBudgets[f].shareGap);
+    };
+
     // The use of an edge whose chords its face's cells bound (a curve straight in (u, v), see
     // CurveOnSurface::straightInParameterPlane): the points that cell sides add to the edge's
     // segments go onto that face's surface, i.e. onto the curve, so that its triangles are all
     // within its surface share. Its chords then do not limit the edge's share. At most one use
     // per edge: a point is on one surface's curve at the (u, v) it has there, not on two.
-    // Only a shared edge: a free one keeps the points cell sides add on its chords.
+    // Only a shared edge: a free one keeps the points cell sides add on its chords; and not one
+    // with a widened share gap, whose shared points are off every surface.
     std::vector<int> curveUse(model.edges.size(), -1);
     for (size_t e = 0; e < model.edges.size(); ++e)
-        if (uses[e].size() >= 2)
+        if (uses[e].size() >= 2 && edgeShareGap[e] <= budget.shareGap)
             for (size_t k = 0; k < uses[e].size() && curveUse[e] < 0; ++k)
                 if (curveOnSurface(uses[e][k]).straightInParameterPlane())
                     curveUse[e] = static_cast<int>(k);
@@ -256,7 +384,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (int f = 0; f < faceCount; ++f)
             if (failure[f].empty() && faceBudgets[f].trimming() > budget.trimming() &&
                 chordsCross(f)) {
-                faceBudgets[f] = budget;
+                rebudget(f, budget);
                 const auto& face = model.faces[f];
                 for (const auto& loop : face.loops)
                     for (const auto& curve : loop.curves) again.insert(curve.edge);
@@ -337,8 +465,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
         for (auto& [vertex, list] : endpoints) {
             std::vector<Point3> all;
-            for (auto& [face, p] : list) all.push_back(p);
-            if (spread(all) <= budget.shareGap) {
+            // a vertex's point moves the triangles of every face there: the smallest gap
+            double gap = std::numeric_limits<double>::infinity();
+            for (auto& [face, p] : list) {
+                all.push_back(p);
+                gap = std::min(gap, faceBudgets[face].shareGap);
+            }
+            // within the fixed gap as before; within a wider one, its point is within half of
+            // it of every face's own point
+            if (spread(all) <= budget.shareGap || farthest(all, centroid(all)) <= 0.5 * gap) {
                 vertexOfBrepVertex[{vertex, -1}] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(all));
                 offsets.push_back(farthest(all, positions.back()));
@@ -369,50 +504,20 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // (distance to the trimmed face) - (largest tolerance of the face's edges)).
     // trj7_b1-ec-214.stp's 0.5 mm edges: trimming curves up to 0.5 mm (14 T at relative 1e-4)
     // from the 3D edge, which lies on both surfaces within 0.003 T.
-    struct CommonPoint {
-        Point3 point;
-        std::vector<Point2> uv;  // per use
-        double offset = 0;       // the largest distance to a foot
-    };
+    // (nearestCommonPoint).
     auto commonPoint = [&](std::size_t e, std::size_t k) -> std::optional<CommonPoint> {
         const auto& poly = polylines[e];
         const std::size_t useCount = uses[e].size();
         std::vector<Point3> own(useCount);
-        std::vector<const BSplineSurface*> surfaces(useCount);
-        std::vector<Point2> starts(useCount);
+        std::vector<Point2> start(useCount);
         for (std::size_t u = 0; u < useCount; ++u) {
-            surfaces[u] = &model.faces[uses[e][u].face].surface;
-            starts[u] = poly.uv[u][k];
-            own[u] = surfaces[u]->point(starts[u].x(), starts[u].y());
+            start[u] = poly.uv[u][k];
+            own[u] = model.faces[uses[e][u].face].surface.point(start[u].x(), start[u].y());
         }
-        const double reach = model.edges[e].tolerance;
-        const SurfaceMeeting meeting = findSurfaceMeeting(surfaces, centroid(own), starts);
-        bool near = meeting.offset <= 0.5 * budget.shareGap;
-        for (std::size_t u = 0; u < useCount; ++u)
-            near &= (meeting.feet[u] - own[u]).norm() <= reach;
-        if (near) return CommonPoint{meeting.point, meeting.uv, meeting.offset};
-        // Where the Newton steps end farther off (faces that run side by side end them midway
-        // between the faces), averaged projections from the own points, held between them, still
-        // find some points: bug33398.step's edge 762 (faces 0.68 T apart) leaves 6 more open
-        // edges at relative 1e-4 without them.
-        const double between = std::min(reach, spread(own) + budget.shareGap);
-        CommonPoint common{centroid(own), starts};
-        std::vector<Point3> feet(useCount);
-        for (int iteration = 0; iteration < 8; ++iteration) {
-            near = true;
-            common.offset = 0;
-            for (std::size_t u = 0; u < useCount; ++u) {
-                const SurfaceFoot foot = projectOntoSurface(*surfaces[u], common.point, starts[u]);
-                common.uv[u] = foot.uv;
-                feet[u] = foot.point;
-                common.offset = std::max(common.offset, (foot.point - common.point).norm());
-                near &= (foot.point - common.point).norm() <= 0.5 * budget.shareGap &&
-                        (foot.point - own[u]).norm() <= between;
-            }
-            if (near) return common;
-            common.point = centroid(feet);
-        }
-        return std::nullopt;
+        const double halfGap = 0.5 * edgeShareGap[e];
+        CommonPoint common = nearestCommonPoint(e, own, start, halfGap, edgeShareGap[e]);
+        if (!(common.offset <= halfGap)) return std::nullopt;
+        return common;
     };
     // the shared vertices of one edge; false where a point stays one per face (a sloppy edge)
     auto shareVertices = [&](size_t e) {
@@ -434,7 +539,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             std::vector<Point3> points;
             for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
-            if (spread(points) <= budget.shareGap) {
+            if (spread(points) <= budget.shareGap ||
+                farthest(points, centroid(points)) <= 0.5 * edgeShareGap[e]) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
                 offsets.push_back(farthest(points, positions.back()));
