@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "occ/MeshVerifier.hpp"
@@ -84,6 +85,16 @@ TessellationResult tessellateGuaranteed(const TopoDS_Shape& shape, double relati
     return tessellateModel(model, options);
 }
 
+// Open edges of a corpus model's guaranteed mesh at `relative`; none when the corpus is absent.
+std::optional<std::size_t> corpusOpenEdges(const char* name, double relative) {
+    const auto path = kCorpus / name;
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    const auto result = tessellateGuaranteed(occ::readShape(path.string()), relative);
+    EXPECT_TRUE(result.failures.empty())
+        << name << ": " << (result.failures.empty() ? "" : result.failures.front().reason);
+    return openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance);
+}
+
 // wing.brep has four free edges (edges of one face). Each kd-tree cell side that crossed one
 // left a vertex on the edge's chord, one more open edge each: 339 open edges at relative 1e-3
 // and 2597 at 1e-4, where BRepMesh leaves 50 and 100. The face's own points on free chords are
@@ -110,12 +121,9 @@ TEST(OpenEdges, FreeEdgesKeepFewPointsBesideTheirChords) {
 // (tolerance 0.0155, 1.6 T at relative 1e-4) once left 320 open edges there, where BRepMesh
 // leaves none.
 TEST(OpenEdges, SloppyEdgesShareAPointNearBothSurfaces) {
-    const auto path = kCorpus / "bottle.brep";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const auto result = tessellateGuaranteed(shape, 1e-4);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const auto open = corpusOpenEdges("bottle.brep", 1e-4);
+    if (!open) GTEST_SKIP() << "corpus not found at " << kCorpus;
+    EXPECT_EQ(*open, 0u);
 }
 
 // trj7_b1-ec-214.stp at relative 1e-3 left 28 open edges on edges whose faces meet within a
@@ -125,11 +133,9 @@ TEST(OpenEdges, SloppyEdgesShareAPointNearBothSurfaces) {
 // narrower than the sag of the longer chords a per-face share gives them (faces 54 and 86).
 // 16 are left: faces 197 and 198 folding back where three faces meet, a spike of face 129.
 TEST(OpenEdges, BothFacesOfASharedChordHaveItsPoints) {
-    const auto path = kCorpus / "trj7_b1-ec-214.stp";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
-    const auto result = tessellateGuaranteed(occ::readShape(path.string()), 1e-3);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_LE(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 16u);
+    const auto open = corpusOpenEdges("trj7_b1-ec-214.stp", 1e-3);
+    if (!open) GTEST_SKIP() << "corpus not found at " << kCorpus;
+    EXPECT_LE(*open, 16u);
 }
 
 // trj7_b1-ec-214.stp at relative 1e-4 left 244 open edges (BRepMesh: 89), about 200 of them on
@@ -137,11 +143,9 @@ TEST(OpenEdges, BothFacesOfASharedChordHaveItsPoints) {
 // while the 3D edge lies on both surfaces: the faces now share points where their surfaces
 // meet (SloppyEdgeMeetingTest). 7 are left.
 TEST(OpenEdges, SloppyEdgesShareWhereTheirSurfacesMeet) {
-    const auto path = kCorpus / "trj7_b1-ec-214.stp";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
-    const auto result = tessellateGuaranteed(occ::readShape(path.string()), 1e-4);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_LE(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 10u);
+    const auto open = corpusOpenEdges("trj7_b1-ec-214.stp", 1e-4);
+    if (!open) GTEST_SKIP() << "corpus not found at " << kCorpus;
+    EXPECT_LE(*open, 10u);
 }
 
 // A sloppy edge whose faces are farther apart than the fixed share gap but within what their
@@ -150,11 +154,9 @@ TEST(OpenEdges, SloppyEdgesShareWhereTheirSurfacesMeet) {
 // tolerance, tests/bench/model_benchmark.py judges; ShareGapTest checks it on a synthetic
 // sloppy edge.
 TEST(OpenEdges, SloppyEdgesWithinTheirFacesShareGapAreClosed) {
-    const auto path = kCorpus / "bug33398.step";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
-    const auto result = tessellateGuaranteed(occ::readShape(path.string()), 1e-4);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const auto open = corpusOpenEdges("bug33398.step", 1e-4);
+    if (!open) GTEST_SKIP() << "corpus not found at " << kCorpus;
+    EXPECT_EQ(*open, 0u);
 }
 
 // The face's own point v on the chord (a, b) of an open boundary, with a fan of triangles
