@@ -128,14 +128,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return CurveOnSurface(model.faces[u.face].surface, c.pcurve, c.first, c.last);
     };
 
-    // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
-    // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
-    // point near both surfaces then serves both faces. It is found by projecting onto each
-    // surface in turn and averaging the feet; each face takes its foot's (u, v), so the shared
-    // vertex is at most the edge's half share gap off each surface (the share budget), and the
-    // face's boundary moves inside its surface by no more than `reach` (at most the edge's own
-    // tolerance: how far the B-rep itself places the edge, which meshjudge and the verifier
-    // allow at a face's boundary).
+    // A point that a sloppy edge's faces share (see shareVertices below): each face takes its
+    // foot's (u, v), so the shared vertex is at most the edge's half share gap off each surface
+    // (the share budget), and the face's boundary moves inside its surface by no more than the
+    // edge's own tolerance (how far the B-rep itself places the edge, which meshjudge and the
+    // verifier allow at a face's boundary).
     struct CommonPoint {
         Point3 point;
         std::vector<Point2> uv;  // per use
@@ -496,15 +493,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
     // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
     // point near both surfaces then serves both faces. It is found from the faces' own points
-    // by SurfaceMeeting (Newton steps onto the surfaces' tangent planes); each face takes its
-    // foot's (u, v), so the shared vertex is at most shareGap/2 off each surface (the share
-    // budget). The face's boundary moves inside its surface, by at most the edge's own
+    // (nearestCommonPoint: where the surfaces meet, else averaged projections); each face takes its
+    // foot's (u, v), so the shared vertex is at most the edge's shareGap/2 off each surface (the
+    // share budget). The face's boundary moves inside its surface, by at most the edge's own
     // tolerance: the B-rep places the true edge within that of each trimming curve, and it is
     // what meshjudge and the verifier allow at a face's boundary (a sample counts as
     // (distance to the trimmed face) - (largest tolerance of the face's edges)).
     // trj7_b1-ec-214.stp's 0.5 mm edges: trimming curves up to 0.5 mm (14 T at relative 1e-4)
     // from the 3D edge, which lies on both surfaces within 0.003 T.
-    // (nearestCommonPoint).
     auto commonPoint = [&](std::size_t e, std::size_t k) -> std::optional<CommonPoint> {
         const auto& poly = polylines[e];
         const std::size_t useCount = uses[e].size();
