@@ -281,7 +281,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // A face has no trimming error at all (ErrorBudget::forChordsOnSurface) where every curve
     // of it is straight in (u, v) and the points added to it lie on its surface: it is its
     // edge's curve use, or the edge is exact and its curve use is another face's (a line
-    // between two cylinders), or an exact pole (a sphere's tip).
+    // between two cylinders). Not a face with a pole (a sphere, a cone's tip): its larger cells
+    // put points on a meridian next to the pole, and the triangle from the pole to two of them
+    // is flat in space.
     std::vector<char> chordsOnSurface(faceCount, 0);
     if (options.mode == ErrorMode::Guaranteed)
         for (int f = 0; f < faceCount; ++f) {
@@ -293,8 +295,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     const int e = face.loops[l].curves[c].edge;
                     const bool exact = model.edges[e].tolerance <= kExactEdge * options.tolerance;
                     all = curveOnSurface({f, l, c}).straightInParameterPlane() &&
-                          ((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
-                           (model.edges[e].degenerated && exact));
+                          curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact);
                 }
             if (!all) continue;
             chordsOnSurface[f] = 1;
@@ -597,6 +598,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 const int e = curve.edge;
                 const int u = useIndex.at({f, l, c});
                 const auto& poly = polylines[e];
+                // Points that cell sides add go onto the curve use's surface, on the curve (step
+                // 4); a face whose own curve is not straight in (u, v) takes them at their foot
+                // on its surface, not on its (u, v) chord: the chord is up to the chord's sag
+                // away, which folds its thin triangles between two close points.
+                const bool onOtherCurve = curveUse[e] >= 0 && curveUse[e] != u &&
+                                          !curveOnSurface({f, l, c}).straightInParameterPlane();
                 // the curve's points in edge order, with the segment each one starts
                 std::vector<BoundaryPoint> points;
                 std::vector<int> segmentAfter;
@@ -609,6 +616,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                         BoundaryPoint p{
                             (1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
                             ins.vertices[u]};
+                        if (onOtherCurve)
+                            p.uv = projectOntoSurface(face.surface, positions[p.vertex], p.uv).uv;
                         if (auto it = exactPoints.find({e, u, p.vertex}); it != exactPoints.end()) {
                             p.exact = true;
                             p.x = it->second.first;
