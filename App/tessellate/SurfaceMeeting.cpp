@@ -27,10 +27,8 @@ SurfaceMeeting findSurfaceMeeting(const std::vector<const BSplineSurface*>& surf
             uv[s] = foot.uv;
             feet[s] = foot.point;
             offset = std::max(offset, (foot.point - point).norm());
-            const auto d = surfaces[s]->derivatives(foot.uv.x(), foot.uv.y());
-            Vector3 normal = d.du.cross(d.dv);
-            const double length = normal.norm();
-            normal = length > 0 ? Vector3(normal / length) : Vector3::Zero();
+            // pole-safe: where a derivative has collapsed, the limit from inside the domain
+            const Vector3 normal = surfaces[s]->normal(foot.uv.x(), foot.uv.y());
             normals.row(s) = normal.transpose();
             heights(s) = normal.dot(foot.point - point);
         }
