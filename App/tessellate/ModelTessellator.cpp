@@ -366,11 +366,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             return (cross > 0) - (cross < 0);
         };
         // proper crossings only: segments that share an end (consecutive ones, loops that
-        // touch at a vertex) do not count
+        // touch at a vertex) do not count, also where two curves' ends differ by rounding (a
+        // line's end and an arc's rational end at one vertex)
+        auto same = [](const Point2& p, const Point2& q) {
+            return (p - q).norm() <= 1e-12 * (1 + p.norm());
+        };
         for (size_t i = 0; i < segments.size(); ++i)
             for (size_t j = i + 1; j < segments.size(); ++j) {
                 const Segment &s = segments[i], &t = segments[j];
-                if (s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b) continue;
+                if (same(s.a, t.a) || same(s.a, t.b) || same(s.b, t.a) || same(s.b, t.b)) continue;
                 if (side(s.a, s.b, t.a) * side(s.a, s.b, t.b) < 0 &&
                     side(t.a, t.b, s.a) * side(t.a, t.b, s.b) < 0)
                     return true;
