@@ -7,19 +7,27 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <ElCLib.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2dConvert_ApproxCurve.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_BezierCurve.hxx>
+#include <Geom2d_Circle.hxx>
+#include <Geom2d_Ellipse.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_Conic.hxx>
+#include <Geom_ElementarySurface.hxx>
+#include <Geom_Ellipse.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SweptSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -32,6 +40,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -135,6 +144,16 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
     if (bspline.IsNull()) {
         double u0, u1, v0, v1;
         BRepTools::UVBounds(face, u0, u1, v0, v1);
+        // A trim of a periodic surface covers one period at most; pcurves winding over more
+        // (a thread) are met by unwrapping the closed B-spline afterwards.
+        if (basis->IsUPeriodic()) u1 = std::min(u1, u0 + basis->UPeriod());
+        if (basis->IsVPeriodic()) v1 = std::min(v1, v0 + basis->VPeriod());
+        // and no farther than the surface goes: a sphere's pcurves may end a rounding step
+        // past its pole, which GeomConvert refuses
+        double lowU, highU, lowV, highV;
+        basis->Bounds(lowU, highU, lowV, highV);
+        if (!basis->IsUPeriodic()) u0 = std::max(u0, lowU), u1 = std::min(u1, highU);
+        if (!basis->IsVPeriodic()) v0 = std::max(v0, lowV), v1 = std::min(v1, highV);
         bspline = GeomConvert::SurfaceToBSplineSurface(
             new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1));
     } else {
@@ -150,29 +169,29 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
 
 namespace {
 
-// True for a face whose surface becomes a B-spline of the same parameter (a B-spline or a
-// plane) and whose edges' curves do too (lines, B-splines, Beziers): neither its pcurves nor
-// the parameter its edges share with their other faces change in a conversion. A circle's
-// B-spline form has another parameter, and the faces of an edge must agree on its parameter.
-bool keepsParameterAsBSpline(const TopoDS_Face& face) {
+// How a face's surface becomes a B-spline.
+enum class SurfaceConversion {
+    // a B-spline or a plane: the same parameter, so the file's pcurves stay valid
+    SameParameter,
+    // an elementary or swept surface: GeomConvert's exact B-spline form, whose parameter
+    // differs (a circle's rational arcs do not run at constant speed in the angle), so every
+    // pcurve is carried onto it from its edge's 3D curve
+    NewParameter,
+    // anything else (offset surfaces): BRepBuilderAPI_NurbsConvert
+    NurbsConvert,
+};
+
+SurfaceConversion conversionOf(const TopoDS_Face& face) {
     TopLoc_Location location;
     const Handle(Geom_Surface) surface = untrimmedSurface(face, location);
-    if (surface.IsNull() || !(surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) ||
-                              surface->IsKind(STANDARD_TYPE(Geom_Plane))))
-        return false;
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        if (BRep_Tool::Degenerated(edge)) continue;
-        double first = 0, last = 0;
-        Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
-        while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(curve))
-            curve = trimmed->BasisCurve();
-        if (curve.IsNull() || !(curve->IsKind(STANDARD_TYPE(Geom_Line)) ||
-                                curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
-                                curve->IsKind(STANDARD_TYPE(Geom_BezierCurve))))
-            return false;
-    }
-    return true;
+    if (surface.IsNull()) return SurfaceConversion::NurbsConvert;
+    if (surface->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) ||
+        surface->IsKind(STANDARD_TYPE(Geom_Plane)))
+        return SurfaceConversion::SameParameter;
+    if (surface->IsKind(STANDARD_TYPE(Geom_ElementarySurface)) ||
+        surface->IsKind(STANDARD_TYPE(Geom_SweptSurface)))
+        return SurfaceConversion::NewParameter;
+    return SurfaceConversion::NurbsConvert;
 }
 
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
@@ -210,6 +229,123 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     return loop;
 }
 
+// GeomConvert's B-spline form maps each parameter on its own (u to u, v to v), so a pcurve
+// along an isoparametric line of the file's surface is one of the B-spline's too. The remade
+// pcurve, fitted to projections, only comes within rounding of it; its poles are put back on
+// the line, so that the tessellator sees a curve straight in (u, v)
+// (CurveOnSurface::straightInParameterPlane) and spends no trimming error on it.
+void keepIsoparametric(const BSplineCurve2d& original, Geom2d_BSplineCurve& remade) {
+    const auto& poles = original.poles();
+    if (poles.empty()) return;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double first = poles.front()[axis] / poles.front().z();
+        bool constant = true;
+        for (const auto& pole : poles)
+            constant = constant && std::abs(pole[axis] / pole.z() - first) <=
+                                       1e-12 * std::max(1.0, std::abs(first));
+        if (!constant) continue;
+        const double value = axis == 0 ? remade.Pole(1).X() : remade.Pole(1).Y();
+        for (int i = 1; i <= remade.NbPoles(); ++i) {
+            gp_Pnt2d p = remade.Pole(i);
+            (axis == 0 ? p.SetX(value) : p.SetY(value));
+            remade.SetPole(i, p);
+        }
+    }
+}
+
+// An edge on a circle or an ellipse, in the exact rational B-spline form that every face of
+// the edge then uses (as BRepBuilderAPI_NurbsConvert does): its parameter s runs over the same
+// range as the conic's angle and meets it at the knots, and theta(s) is the angle in between.
+// A plane's circle in (u, v) then converts exactly too, into a rational quadratic that the
+// edge discretiser bounds tightly, where an approximation in the angle would take a high
+// degree and many spans.
+struct ConicEdge {
+    Handle(Geom_Conic) conic;
+    Handle(Geom_BSplineCurve) rational;
+    double first = 0, last = 0;
+
+    double theta(double s) const {
+        const gp_Pnt p = rational->Value(s);
+        double angle = conic->IsKind(STANDARD_TYPE(Geom_Circle))
+                           ? ElCLib::Parameter(Handle(Geom_Circle)::DownCast(conic)->Circ(), p)
+                           : ElCLib::Parameter(Handle(Geom_Ellipse)::DownCast(conic)->Elips(), p);
+        return angle + 2 * M_PI * std::round((s - angle) / (2 * M_PI));
+    }
+};
+
+// Null for an edge on anything else, or one whose faces might not share its range (not
+// SameRange / SameParameter): the choice must be the same from every face of the edge.
+std::optional<ConicEdge> conicEdgeOf(const TopoDS_Edge& edge) {
+    if (BRep_Tool::Degenerated(edge) || !BRep_Tool::SameRange(edge) ||
+        !BRep_Tool::SameParameter(edge))
+        return std::nullopt;
+    ConicEdge result;
+    Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, result.first, result.last);  // located
+    while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(curve)) curve = trimmed->BasisCurve();
+    if (curve.IsNull() ||
+        !(curve->IsKind(STANDARD_TYPE(Geom_Circle)) || curve->IsKind(STANDARD_TYPE(Geom_Ellipse))))
+        return std::nullopt;
+    result.conic = Handle(Geom_Conic)::DownCast(curve);
+    if (!(result.last > result.first) || result.last - result.first > 2 * M_PI + 1e-9)
+        return std::nullopt;
+    try {
+        result.rational = GeomConvert::CurveToBSplineCurve(
+            new Geom_TrimmedCurve(curve, result.first, result.last), Convert_TgtThetaOver2);
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
+    }
+    const double slack = 1e-9 * std::max(1.0, std::abs(result.last));
+    if (result.rational.IsNull() ||
+        std::abs(result.rational->FirstParameter() - result.first) > slack ||
+        std::abs(result.rational->LastParameter() - result.last) > slack ||
+        std::abs(result.theta(result.first) - result.first) > slack ||
+        std::abs(result.theta(result.last) - result.last) > slack)
+        return std::nullopt;
+    return result;
+}
+
+// The pcurve of a conic edge in the edge's new parameter. Where the face keeps its parameter
+// and the pcurve is a conic too (a plane's circle), the same conversion is exact; otherwise the
+// edge's points are projected onto the surface from the pcurve at theta(s). Null where neither
+// works.
+Handle(Geom2d_BSplineCurve)
+    conicEdgePcurve(const ConicEdge& edge, const Handle(Geom_BSplineSurface) & surface,
+                    const Handle(Geom2d_Curve) & pcurve, bool newParameter, double accuracy) {
+    Handle(Geom2d_Curve) basis = pcurve;
+    while (auto trimmed = Handle(Geom2d_TrimmedCurve)::DownCast(basis))
+        basis = trimmed->BasisCurve();
+    if (!newParameter && (basis->IsKind(STANDARD_TYPE(Geom2d_Circle)) ||
+                          basis->IsKind(STANDARD_TYPE(Geom2d_Ellipse)))) {
+        try {
+            Handle(Geom2d_BSplineCurve) exact = Geom2dConvert::CurveToBSplineCurve(
+                new Geom2d_TrimmedCurve(basis, edge.first, edge.last), Convert_TgtThetaOver2);
+            if (exact->IsPeriodic()) exact->SetNotPeriodic();
+            double worst = 0;
+            for (int k = 0; k <= 32; ++k) {
+                const double s = edge.first + (edge.last - edge.first) * k / 32;
+                const gp_Pnt2d uv = exact->Value(s);
+                worst = std::max(worst,
+                                 surface->Value(uv.X(), uv.Y()).Distance(edge.rational->Value(s)));
+            }
+            if (worst <= accuracy) return exact;
+        } catch (const Standard_Failure&) {
+        }
+    }
+    auto guess = [&](double s) { return pcurve->Value(edge.theta(s)); };
+    Handle(Geom2d_BSplineCurve) remade =
+        pcurveFromCurve([&](double s) { return edge.rational->Value(s); }, surface, guess,
+                        edge.first, edge.last, accuracy);
+    if (remade.IsNull() && !newParameter)
+        // the projection failed, the file's pcurve is still right: the same (u, v) at theta(s)
+        remade = pcurveFromCurve(
+            [&](double s) {
+                const gp_Pnt2d uv = guess(s);
+                return surface->Value(uv.X(), uv.Y());
+            },
+            surface, guess, edge.first, edge.last, accuracy);
+    return remade;
+}
+
 // A box around the loops' pcurves over their edge ranges: the control points whose basis
 // functions reach into [first, last] (convex hull property, weights > 0).
 std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
@@ -231,9 +367,11 @@ std::pair<Point2, Point2> pcurveBounds(const std::vector<TrimLoop>& loops) {
 }
 
 // pcurveAccuracy: a pcurve that strays farther than this from its edge's 3D curve is remade
-// from the 3D curve (see pcurveFromEdgeCurve).
+// from the 3D curve (see pcurveFromEdgeCurve). newParameter: the surface's B-spline form has
+// another parameter than the file's surface, so every pcurve is remade.
 TrimmedSurface importFace(const TopoDS_Face& face, int index,
-                          const TopTools_DataMapOfShapeInteger& edgeIndex, double pcurveAccuracy) {
+                          const TopTools_DataMapOfShapeInteger& edgeIndex, double pcurveAccuracy,
+                          bool newParameter) {
     TrimmedSurface result;
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
@@ -264,12 +402,32 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
             double first = 0, last = 0;
             const Handle(Geom2d_Curve) pcurve =
                 BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
-            if (unwrapped == surface && pcurveDeviation(curveEdges[l][c], surface, pcurve,
-                                                        curve.first, curve.last) <= pcurveAccuracy)
+            if (const auto conic = conicEdgeOf(curveEdges[l][c])) {
+                const Handle(Geom2d_BSplineCurve) remade =
+                    conicEdgePcurve(*conic, unwrapped, pcurve, newParameter, pcurveAccuracy);
+                if (remade.IsNull())
+                    throw Standard_Failure(
+                        "a trimming curve could not be carried onto its circle's NURBS form");
+                keepIsoparametric(curve.pcurve, *remade);
+                curve.pcurve = toCurve(remade);
+                curve.first = conic->first;
+                curve.last = conic->last;
                 continue;
+            }
+            if (!newParameter && unwrapped == surface &&
+                pcurveDeviation(curveEdges[l][c], surface, pcurve, curve.first, curve.last) <=
+                    pcurveAccuracy)
+                continue;
+            // the file's pcurve is the guess: GeomConvert's parameter stays within a fraction of
+            // a span of the analytic one, and it keeps the side of a seam
             const Handle(Geom2d_BSplineCurve) remade = pcurveFromEdgeCurve(
                 curveEdges[l][c], unwrapped, pcurve, curve.first, curve.last, pcurveAccuracy);
-            if (!remade.IsNull()) curve.pcurve = toCurve(remade);
+            if (!remade.IsNull()) {
+                if (newParameter) keepIsoparametric(curve.pcurve, *remade);
+                curve.pcurve = toCurve(remade);
+            } else if (newParameter)
+                throw Standard_Failure(
+                    "a trimming curve could not be carried onto the surface's NURBS form");
         }
     result.surface = toBSplineSurface(unwrapped);
     return result;
@@ -292,74 +450,92 @@ Model importModel(const TopoDS_Shape& original) {
     // below any tolerance a user asks for, so that the mesh closes across them.
     const SewnShape sewn = sewFaces(original, kSewingTolerance * model.boundingBoxDiagonal);
 
-    // Faces on a B-spline surface or a plane are taken as they are: faceSurfaceAsBSpline
-    // gives them a B-spline surface of the same parameter, so their pcurves stay valid.
-    // BRepBuilderAPI_NurbsConvert would copy them and project every pcurve of theirs onto the
-    // copy again (ProjLib_ComputeApproxOnPolarSurface), which took most of the import time of
-    // B-spline models (about 60% of trj7's). The other faces (cylinders, cones, spheres, tori,
-    // revolutions, offsets) change parameter with their surface and are converted together, so
-    // that they share their converted edges; a converted edge keeps the index of the edge it
-    // came from, which is what the faces of an edge share.
+    // No face goes through BRepBuilderAPI_NurbsConvert unless it must. It would copy every
+    // face and approximate each pcurve again on the converted surface
+    // (ProjLib_ComputeApproxOnPolarSurface), which took 90% of the import of a model of
+    // cylinders and cones (bottle.brep: 6.5 of 7 s). Instead a face keeps its edges, so that
+    // the faces of an edge share its parameter as the file gives it, and its surface becomes
+    // a B-spline on its own (faceSurfaceAsBSpline); where that changes the surface's parameter
+    // (cylinders, cones, spheres, tori, revolutions, extrusions), the pcurves are carried onto
+    // it from their edges' 3D curves. Only the rest (offset surfaces), and a face whose pcurves
+    // cannot be carried, are converted by NurbsConvert, together so that they share their
+    // converted edges; a converted edge keeps the index of the edge it came from, which is
+    // what the faces of an edge share.
     TopTools_IndexedMapOfShape edges, vertices;
     TopExp::MapShapes(sewn.shape, TopAbs_EDGE, edges);
     TopExp::MapShapes(sewn.shape, TopAbs_VERTEX, vertices);
     TopTools_DataMapOfShapeInteger edgeIndex;
     for (int k = 1; k <= edges.Extent(); ++k) edgeIndex.Bind(edges(k), k - 1);
+    const double pcurveAccuracy = kPcurveAccuracy * model.boundingBoxDiagonal;
 
-    std::vector<bool> keeps(sewn.faces.size());
-    TopoDS_Compound toConvert;
-    BRep_Builder builder;
-    builder.MakeCompound(toConvert);
-    bool anyToConvert = false;
-    for (size_t k = 0; k < sewn.faces.size(); ++k) {
-        keeps[k] = keepsParameterAsBSpline(sewn.faces[k]);
-        if (!keeps[k]) builder.Add(toConvert, sewn.faces[k]), anyToConvert = true;
-    }
-    std::optional<BRepBuilderAPI_NurbsConvert> converter;
-    if (anyToConvert) {
+    model.faces.resize(originalFaces.Extent());
+    std::vector<int> toConvert;  // 0-based face slots left for NurbsConvert
+    for (int k = 1; k <= originalFaces.Extent(); ++k) {
+        const SurfaceConversion conversion = conversionOf(sewn.faces[k - 1]);
+        if (conversion == SurfaceConversion::NurbsConvert) {
+            toConvert.push_back(k - 1);
+            continue;
+        }
         try {
-            converter.emplace(toConvert, Standard_False);
+            model.faces[k - 1] = importFace(sewn.faces[k - 1], k, edgeIndex, pcurveAccuracy,
+                                            conversion == SurfaceConversion::NewParameter);
+        } catch (const Standard_Failure& failure) {
+            if (conversion == SurfaceConversion::NewParameter) {
+                toConvert.push_back(k - 1);
+                continue;
+            }
+            model.faces[k - 1] = TrimmedSurface{};
+            model.faces[k - 1].faceIndex = k;
+            model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
+        }
+    }
+
+    std::optional<BRepBuilderAPI_NurbsConvert> converter;
+    if (!toConvert.empty()) {
+        TopoDS_Compound compound;
+        BRep_Builder builder;
+        builder.MakeCompound(compound);
+        for (int k : toConvert) builder.Add(compound, sewn.faces[k]);
+        try {
+            converter.emplace(compound, Standard_False);
             if (!converter->IsDone()) converter.reset();
         } catch (const Standard_Failure&) {
             converter.reset();
         }
         if (converter) {
             TopTools_IndexedMapOfShape convertedEdges;
-            TopExp::MapShapes(toConvert, TopAbs_EDGE, convertedEdges);
+            TopExp::MapShapes(compound, TopAbs_EDGE, convertedEdges);
             for (int k = 1; k <= convertedEdges.Extent(); ++k)
                 if (edgeIndex.IsBound(convertedEdges(k)))
                     edgeIndex.Bind(converter->ModifiedShape(convertedEdges(k)),
                                    edgeIndex.Find(convertedEdges(k)));
         }
     }
-
-    model.faces.resize(originalFaces.Extent());
-    for (int k = 1; k <= originalFaces.Extent(); ++k) {
+    for (int slot : toConvert) {
+        const int k = slot + 1;
         const TopoDS_Face originalFace = TopoDS::Face(originalFaces(k));
         try {
             TopoDS_Face face;
-            if (keeps[k - 1]) {
-                face = sewn.faces[k - 1];
-            } else if (converter) {
-                face = TopoDS::Face(converter->ModifiedShape(sewn.faces[k - 1]));
+            if (converter) {
+                face = TopoDS::Face(converter->ModifiedShape(sewn.faces[slot]));
             } else {
                 // the faces together failed to convert: this one alone, its edges its own
-                BRepBuilderAPI_NurbsConvert single(sewn.faces[k - 1], Standard_False);
+                BRepBuilderAPI_NurbsConvert single(sewn.faces[slot], Standard_False);
                 face = TopoDS::Face(single.Shape());
             }
             // the converted face comes back FORWARD; the orientation (which side is outside)
             // is the original face's
             face.Orientation(originalFace.Orientation());
-            model.faces[k - 1] =
-                importFace(face, k, edgeIndex, kPcurveAccuracy * model.boundingBoxDiagonal);
+            model.faces[slot] = importFace(face, k, edgeIndex, pcurveAccuracy, false);
         } catch (const Standard_Failure& failure) {
-            model.faces[k - 1].faceIndex = k;
-            model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
+            model.faces[slot] = TrimmedSurface{};
+            model.faces[slot].faceIndex = k;
+            model.faces[slot].error = std::string("import failed: ") + failure.GetMessageString();
         }
-        if (model.faces[k - 1].error.empty())
-            if (auto problem = model.faces[k - 1].surface.problem())
-                model.faces[k - 1].error = "invalid surface: " + *problem;
     }
+    for (auto& face : model.faces)
+        if (face.error.empty())
+            if (auto problem = face.surface.problem()) face.error = "invalid surface: " + *problem;
 
     model.vertices.resize(vertices.Extent());
     for (int k = 1; k <= vertices.Extent(); ++k) {

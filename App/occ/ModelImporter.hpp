@@ -9,9 +9,11 @@
 namespace nurbslod::occ {
 
 // Converts every face of the shape (TopExp::MapShapes order, FreeCAD's shape.Faces) to a
-// trimmed NURBS surface: analytic surfaces through BRepBuilderAPI_NurbsConvert, the face's
-// location applied to the control points, loops from the edges' pcurves. A face that cannot
-// be converted keeps its slot with `error` set.
+// trimmed NURBS surface: elementary and swept surfaces by GeomConvert with their pcurves
+// carried onto the new parameter (circle edges in their rational form on every face), offset
+// surfaces through BRepBuilderAPI_NurbsConvert, the face's location applied to the control
+// points, loops from the edges' pcurves. A face that cannot be converted keeps its slot with
+// `error` set.
 Model importModel(const TopoDS_Shape& shape);
 
 // The NURBS form of a face's surface as the importer sees it (analytic surfaces converted,

@@ -3,10 +3,14 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace nurbslod::occ {
 
@@ -44,6 +48,38 @@ gp_Pnt2d projectNear(const Handle(Geom_BSplineSurface) & surface, const gp_Pnt& 
     return {u, v};
 }
 
+// The interpolant has a knot at every sample. Where the pcurve is a line in the edge parameter
+// (a circle's pcurve on a surface whose rational arcs match the edge's: u = s), a line of
+// degree 1 replaces it: the 3D curve on the surface then keeps the surface's degree, and the
+// edge discretiser needs no span per sample. A B-spline is a linear function exactly when each
+// pole is that function at its Greville abscissa (the mean of the degree knots after it).
+Handle(Geom2d_BSplineCurve) asLineWherePossible(const Handle(Geom2d_BSplineCurve) & curve) {
+    if (curve->IsRational()) return curve;
+    const int n = curve->NbPoles(), degree = curve->Degree();
+    TColStd_Array1OfReal knots(1, n + degree + 1);
+    curve->KnotSequence(knots);
+    const double first = curve->FirstParameter(), last = curve->LastParameter();
+    const gp_Pnt2d a = curve->Value(first), b = curve->Value(last);
+    double extent = 0;
+    for (int i = 1; i <= n; ++i)
+        extent = std::max({extent, std::abs(curve->Pole(i).X()), std::abs(curve->Pole(i).Y())});
+    const double tolerance = 1e-10 * std::max(1.0, extent);
+    for (int i = 1; i <= n; ++i) {
+        double greville = 0;
+        for (int k = i + 1; k <= i + degree; ++k) greville += knots(k);
+        const double s = (greville / degree - first) / (last - first);
+        if (curve->Pole(i).Distance(gp_Pnt2d(a.XY() + s * (b.XY() - a.XY()))) > tolerance)
+            return curve;
+    }
+    TColgp_Array1OfPnt2d poles(1, 2);
+    poles(1) = a, poles(2) = b;
+    TColStd_Array1OfReal ends(1, 2);
+    ends(1) = first, ends(2) = last;
+    TColStd_Array1OfInteger multiplicities(1, 2);
+    multiplicities(1) = multiplicities(2) = 2;
+    return new Geom2d_BSplineCurve(poles, ends, multiplicities, 1);
+}
+
 }  // namespace
 
 double pcurveDeviation(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
@@ -64,6 +100,14 @@ Handle(Geom2d_BSplineCurve)
                         const Handle(Geom2d_Curve) & guess, double first, double last,
                         double accuracy) {
     const BRepAdaptor_Curve curve(edge);
+    return pcurveFromCurve([&](double t) { return curve.Value(t); }, surface,
+                           [&](double t) { return guess->Value(t); }, first, last, accuracy);
+}
+
+Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>& curve,
+                                            const Handle(Geom_BSplineSurface) & surface,
+                                            const std::function<gp_Pnt2d(double)>& guess,
+                                            double first, double last, double accuracy) {
     // A projection far from the guess in (u, v) is no correction but a slide along a pole or a
     // jump to another sheet: the pcurve is then kept as it was (nothing is returned).
     double u0, u1, v0, v1;
@@ -71,8 +115,8 @@ Handle(Geom2d_BSplineCurve)
     const double reachU = kLargestSlide * (u1 - u0), reachV = kLargestSlide * (v1 - v0);
     bool slid = false;
     auto sampleAt = [&](double t) {
-        const gp_Pnt2d start = guess->Value(t);
-        const gp_Pnt point = curve.Value(t);
+        const gp_Pnt2d start = guess(t);
+        const gp_Pnt point = curve(t);
         // At a pole (a row of poles collapsed to a point) a projection would slide freely along
         // the row: the guess stays there.
         gp_Pnt onSurface;
@@ -115,9 +159,9 @@ Handle(Geom2d_BSplineCurve)
         }
         // a hundredth of the accuracy asked for is far below any tolerance; a curve that does
         // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself
-        if (worst <= 0.01 * accuracy) return result;
+        if (worst <= 0.01 * accuracy) return asLineWherePossible(result);
         if (samples == kMostSamples)
-            return worst <= accuracy ? result : Handle(Geom2d_BSplineCurve)();
+            return worst <= accuracy ? asLineWherePossible(result) : Handle(Geom2d_BSplineCurve)();
     }
     return {};
 }
