@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <Geom2dAPI_Interpolate.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <unordered_map>
 
 namespace nurbslod::occ {
 
@@ -21,16 +23,17 @@ constexpr double kPoleRatio = 1e-4;
 // How far (as a fraction of the surface's domain) a projection may move a pcurve point.
 constexpr double kLargestSlide = 0.25;
 
-// The (u, v) of the surface point nearest to `point`, by Gauss-Newton steps from `start`.
-gp_Pnt2d projectNear(const Handle(Geom_BSplineSurface) & surface, const gp_Pnt& point,
-                     gp_Pnt2d start) {
-    double u0, u1, v0, v1;
-    surface->Bounds(u0, u1, v0, v1);
+// The (u, v) of the surface point nearest to `point`, by Gauss-Newton steps from `start`. The
+// adaptor evaluates through its span cache: Geom_BSplineSurface::D1 would redo de Boor's
+// algorithm at every step (40% of a STEP model's import).
+gp_Pnt2d projectNear(const GeomAdaptor_Surface& surface, const gp_Pnt& point, gp_Pnt2d start) {
+    const double u0 = surface.FirstUParameter(), u1 = surface.LastUParameter();
+    const double v0 = surface.FirstVParameter(), v1 = surface.LastVParameter();
     double u = start.X(), v = start.Y();
     for (int iteration = 0; iteration < 50; ++iteration) {
         gp_Pnt p;
         gp_Vec du, dv;
-        surface->D1(u, v, p, du, dv);
+        surface.D1(u, v, p, du, dv);
         const gp_Vec r(p, point);
         const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
         const double ru = du.Dot(r), rv = dv.Dot(r);
@@ -113,22 +116,30 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     double u0, u1, v0, v1;
     surface->Bounds(u0, u1, v0, v1);
     const double reachU = kLargestSlide * (u1 - u0), reachV = kLargestSlide * (v1 - v0);
+    const GeomAdaptor_Surface adaptor(surface);
     bool slid = false;
-    auto sampleAt = [&](double t) {
+    // each round's midpoints are the next round's samples: projected once
+    std::unordered_map<double, gp_Pnt2d> projections;
+    auto project = [&](double t) {
         const gp_Pnt2d start = guess(t);
         const gp_Pnt point = curve(t);
         // At a pole (a row of poles collapsed to a point) a projection would slide freely along
         // the row: the guess stays there.
         gp_Pnt onSurface;
         gp_Vec du, dv;
-        surface->D1(start.X(), start.Y(), onSurface, du, dv);
+        adaptor.D1(start.X(), start.Y(), onSurface, du, dv);
         const double shorter = std::min(du.Magnitude(), dv.Magnitude());
         const double longer = std::max(du.Magnitude(), dv.Magnitude());
         if (!(shorter > kPoleRatio * longer)) return start;
-        const gp_Pnt2d foot = projectNear(surface, point, start);
+        const gp_Pnt2d foot = projectNear(adaptor, point, start);
         if (!(std::abs(foot.X() - start.X()) <= reachU && std::abs(foot.Y() - start.Y()) <= reachV))
             slid = true;
         return foot;
+    };
+    auto sampleAt = [&](double t) {
+        const auto known = projections.find(t);
+        if (known != projections.end()) return known->second;
+        return projections.emplace(t, project(t)).first->second;
     };
     constexpr int kMostSamples = 1024;
     for (int samples = 32; samples <= kMostSamples; samples *= 2) {
@@ -154,8 +165,8 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         for (int k = 0; k < samples; ++k) {
             const double t = first + (last - first) * (k + 0.5) / samples;
             const gp_Pnt2d fitted = result->Value(t), projected = sampleAt(t);
-            worst = std::max(worst, surface->Value(fitted.X(), fitted.Y())
-                                        .Distance(surface->Value(projected.X(), projected.Y())));
+            worst = std::max(worst, adaptor.Value(fitted.X(), fitted.Y())
+                                        .Distance(adaptor.Value(projected.X(), projected.Y())));
         }
         // a hundredth of the accuracy asked for is far below any tolerance; a curve that does
         // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself
