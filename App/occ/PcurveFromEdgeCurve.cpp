@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <unordered_map>
 
 namespace nurbslod::occ {
@@ -142,6 +143,7 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         return projections.emplace(t, project(t)).first->second;
     };
     constexpr int kMostSamples = 1024;
+    double previousWorst = std::numeric_limits<double>::infinity();
     for (int samples = 32; samples <= kMostSamples; samples *= 2) {
         Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, samples + 1);
         Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, samples + 1);
@@ -169,10 +171,13 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
                                         .Distance(adaptor.Value(projected.X(), projected.Y())));
         }
         // a hundredth of the accuracy asked for is far below any tolerance; a curve that does
-        // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself
+        // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself,
+        // as soon as more samples stop bringing it closer (each round costs twice the last)
         if (worst <= 0.01 * accuracy) return asLineWherePossible(result);
+        if (worst <= accuracy && worst > 0.5 * previousWorst) return asLineWherePossible(result);
         if (samples == kMostSamples)
             return worst <= accuracy ? asLineWherePossible(result) : Handle(Geom2d_BSplineCurve)();
+        previousWorst = worst;
     }
     return {};
 }
