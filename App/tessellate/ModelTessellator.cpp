@@ -345,42 +345,101 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     };
     tbb::parallel_for(size_t(0), model.edges.size(), discretizeOnce);
 
-    // 1b. A face that gave its surface share to its trimming curves has longer chords; on a
-    // strip narrower than their sag (trj7_b1-ec-214.stp faces 54 and 86: planes 0.08 mm wide at
-    // T = 0.36 mm) the chords of its two sides cross, the loop repair of section 5.1 cuts the
-    // strip away, and its neighbours' edges stay open. Such a face takes the fixed split back
-    // and its edges are discretised again (their share is the smallest of their faces').
-    auto chordsCross = [&](int f) {
+    // The segments of face f's boundary polygon that cross another of its segments, as
+    // (edge, segment) pairs: proper crossings only, so segments that share an end (consecutive
+    // ones, loops that touch at a vertex) do not count. A sweep over the segments sorted by
+    // their smallest u keeps it near linear on long loops.
+    // With `toHalve`, only the crossings that halving can undo (step 1c): not two segments that
+    // meet at a corner (ends closer than 1e-3 of the shorter one: curves that end at one vertex
+    // up to rounding or up to a sloppy file's gap cross there however short their chords get),
+    // nor two whose curves cross too (a sloppy curve that loops on itself near a corner), which
+    // is tried with 16 chords on each.
+    auto crossingSegments = [&](int f, bool toHalve) {
         struct Segment {
             Point2 a, b;
+            int edge, index, use;
         };
         std::vector<Segment> segments;
         const auto& face = model.faces[f];
         for (int l = 0; l < int(face.loops.size()); ++l)
             for (int c = 0; c < int(face.loops[l].curves.size()); ++c) {
-                const auto& uv = polylines[face.loops[l].curves[c].edge].uv[useIndex.at({f, l, c})];
-                for (size_t k = 0; k + 1 < uv.size(); ++k) segments.push_back({uv[k], uv[k + 1]});
+                const int e = face.loops[l].curves[c].edge;
+                const int u = useIndex.at({f, l, c});
+                const auto& uv = polylines[e].uv[u];
+                for (size_t k = 0; k + 1 < uv.size(); ++k)
+                    segments.push_back({uv[k], uv[k + 1], e, static_cast<int>(k), u});
             }
         auto side = [](const Point2& a, const Point2& b, const Point2& p) {
             const double cross = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
             return (cross > 0) - (cross < 0);
         };
-        // proper crossings only: segments that share an end (consecutive ones, loops that
-        // touch at a vertex) do not count, also where two curves' ends differ by rounding (a
-        // line's end and an arc's rational end at one vertex)
+        auto cross = [&](const Segment& s, const Segment& t) {
+            return side(s.a, s.b, t.a) * side(s.a, s.b, t.b) < 0 &&
+                   side(t.a, t.b, s.a) * side(t.a, t.b, s.b) < 0;
+        };
+        // segments that share an end (consecutive ones, loops that touch at a vertex) do not
+        // cross, also where two curves' ends differ by rounding (a line's end and an arc's
+        // rational end at one vertex)
         auto same = [](const Point2& p, const Point2& q) {
             return (p - q).norm() <= 1e-12 * (1 + p.norm());
         };
-        for (size_t i = 0; i < segments.size(); ++i)
-            for (size_t j = i + 1; j < segments.size(); ++j) {
-                const Segment &s = segments[i], &t = segments[j];
-                if (same(s.a, t.a) || same(s.a, t.b) || same(s.b, t.a) || same(s.b, t.b)) continue;
-                if (side(s.a, s.b, t.a) * side(s.a, s.b, t.b) < 0 &&
-                    side(t.a, t.b, s.a) * side(t.a, t.b, s.b) < 0)
-                    return true;
+        auto touch = [&](const Segment& s, const Segment& t) {
+            if (!toHalve)
+                return same(s.a, t.a) || same(s.a, t.b) || same(s.b, t.a) || same(s.b, t.b);
+            const double near2 =
+                1e-6 * std::min((s.b - s.a).squaredNorm(), (t.b - t.a).squaredNorm());
+            for (const Point2* p : {&s.a, &s.b})
+                for (const Point2* q : {&t.a, &t.b})
+                    if ((*p - *q).squaredNorm() <= near2) return true;
+            return false;
+        };
+        // the segment's curve as 16 chords
+        auto finer = [&](const Segment& s) {
+            constexpr int pieces = 16;
+            const auto& params = polylines[s.edge].params;
+            const CurveOnSurface curve = curveOnSurface(uses[s.edge][s.use]);
+            std::vector<Segment> chords;
+            Point2 previous = s.a;
+            for (int i = 1; i <= pieces; ++i) {
+                const Point2 next =
+                    i == pieces ? s.b
+                                : curve.uv(params[s.index] +
+                                           (params[s.index + 1] - params[s.index]) * i / pieces);
+                chords.push_back({previous, next, s.edge, s.index, s.use});
+                previous = next;
             }
-        return false;
+            return chords;
+        };
+        auto curvesCross = [&](const Segment& s, const Segment& t) {
+            const auto sChords = finer(s), tChords = finer(t);
+            for (const Segment& a : sChords)
+                for (const Segment& b : tChords)
+                    if (!touch(a, b) && cross(a, b)) return true;
+            return false;
+        };
+        auto lowU = [](const Segment& s) { return std::min(s.a.x(), s.b.x()); };
+        std::sort(segments.begin(), segments.end(),
+                  [&](const Segment& s, const Segment& t) { return lowU(s) < lowU(t); });
+        std::set<std::pair<int, int>> crossing;
+        for (size_t i = 0; i < segments.size(); ++i) {
+            const Segment& s = segments[i];
+            const double highU = std::max(s.a.x(), s.b.x());
+            for (size_t j = i + 1; j < segments.size() && lowU(segments[j]) <= highU; ++j) {
+                const Segment& t = segments[j];
+                if (touch(s, t) || !cross(s, t) || (toHalve && curvesCross(s, t))) continue;
+                crossing.insert({s.edge, s.index});
+                crossing.insert({t.edge, t.index});
+            }
+        }
+        return crossing;
     };
+    auto chordsCross = [&](int f) { return !crossingSegments(f, false).empty(); };
+
+    // 1b. A face that gave its surface share to its trimming curves has longer chords; on a
+    // strip narrower than their sag (trj7_b1-ec-214.stp faces 54 and 86: planes 0.08 mm wide at
+    // T = 0.36 mm) the chords of its two sides cross, the loop repair of section 5.1 cuts the
+    // strip away, and its neighbours' edges stay open. Such a face takes the fixed split back
+    // and its edges are discretised again (their share is the smallest of their faces').
     for (int round = 0; round < 2; ++round) {
         std::set<int> again;
         for (int f = 0; f < faceCount; ++f)
@@ -394,6 +453,56 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (again.empty()) break;
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
+    }
+
+    // 1c. Chords that still cross in a face's (u, v), and loops of fewer than three points, are
+    // halved, for every face of their edges at once. A crossing left to the loop repair of
+    // section 5.1 puts a point at the crossing that only this face has, and a loop of two
+    // points is fanned over the middles of its chords, which are its own too: open edges either
+    // way. trj7_b1-ec-214.stp face 197 (a plane 0.15 mm wide where three faces meet, at
+    // relative 1e-3) had edge 415's chord cross edge 602's; face 129 (a sliver between two
+    // curves that join the same two vertices, closed by a pole) had one chord on each curve.
+    // Halving brings each chord nearer its curve, and curves that do not cross stop their
+    // chords crossing within a few rounds; where the curves themselves cross, the rounds end.
+    {
+        constexpr int kHalvingRounds = 6;
+        auto splitSegments = [&](int e, const std::set<int>& segments) {
+            auto& params = polylines[e].params;
+            std::vector<double> halved;
+            for (size_t k = 0; k < params.size(); ++k) {
+                halved.push_back(params[k]);
+                if (k + 1 < params.size() && segments.count(static_cast<int>(k)))
+                    halved.push_back(0.5 * (params[k] + params[k + 1]));
+            }
+            params = std::move(halved);
+            sampleUses(e);
+        };
+        for (int round = 0; round < kHalvingRounds; ++round) {
+            std::vector<std::set<std::pair<int, int>>> toSplit(faceCount);
+            tbb::parallel_for(0, faceCount, [&](int f) {
+                if (!failure[f].empty()) return;
+                toSplit[f] = crossingSegments(f, true);
+                for (const auto& loop : model.faces[f].loops) {
+                    std::size_t segments = 0;
+                    for (const auto& curve : loop.curves)
+                        if (!model.edges[curve.edge].degenerated &&
+                            !polylines[curve.edge].params.empty())
+                            segments += polylines[curve.edge].params.size() - 1;
+                    if (segments == 0 || segments >= 3) continue;
+                    for (const auto& curve : loop.curves)
+                        if (!model.edges[curve.edge].degenerated)
+                            for (size_t k = 0; k + 1 < polylines[curve.edge].params.size(); ++k)
+                                toSplit[f].insert({curve.edge, static_cast<int>(k)});
+                }
+            });
+            std::map<int, std::set<int>> byEdge;
+            for (const auto& list : toSplit)
+                for (const auto& [e, k] : list) byEdge[e].insert(k);
+            if (byEdge.empty()) break;
+            const std::vector<std::pair<int, std::set<int>>> edges(byEdge.begin(), byEdge.end());
+            tbb::parallel_for(size_t(0), edges.size(),
+                              [&](size_t i) { splitSegments(edges[i].first, edges[i].second); });
+        }
     }
 
     // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
