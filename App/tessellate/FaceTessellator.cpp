@@ -716,12 +716,18 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
 
     // The ring's points on a side of the cell whose points are all one point in space (a pole:
     // a degenerated edge, each of whose points the boundary gives its own vertex at the same
-    // position), or empty where no side is. Points within 2e-2 of the share gap (at most 1e-2
-    // of the tolerance, which the model's weld merges) count as one.
-    const double samePoint = 2e-2 * budget_.shareGap;
+    // position), or empty where no side is. Only a true pole: points equal but for rounding
+    // (1e-9 of the cell's coordinates). A side that is merely short in space, or a pole row
+    // a sloppy file spreads, keeps the plain triangulation: a triangle with two of its points
+    // has area there, and may be all the face has (a thin spike).
     auto pointsAtPole = [&](const std::vector<IntegerPoint2>& ring,
                             const std::vector<std::uint32_t>& ringIds, const Rect& r) {
         std::vector<char> atPole(ring.size(), 0);
+        double magnitude = 0;
+        for (std::uint32_t id : ringIds)
+            if (!needsPosition[id])
+                magnitude = std::max(magnitude, mesh.vertices[id].position.cwiseAbs().maxCoeff());
+        const double samePoint = 1e-9 * magnitude;
         bool any = false;
         for (int side = 0; side < 4; ++side) {
             std::vector<std::size_t> on;
