@@ -787,8 +787,13 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                 const auto triangles = atPole.empty()
                                            ? std::vector<std::array<std::uint32_t, 3>>{}
                                            : triangulateCellAtPole(integerRings[0], atPole);
-                for (const auto& t : triangles)
-                    mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
+                for (const auto& t : triangles) {
+                    const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
+                    // the pole's one vertex twice: no triangle (a spike of a face is then left
+                    // without any, and fanned over its boundary like other faces too thin)
+                    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+                    mesh.triangles.push_back(tri);
+                }
                 if (!triangles.empty()) continue;
             }
             const Triangulation triangulation = triangulatePolygon(integerRings);
