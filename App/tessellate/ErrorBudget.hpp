@@ -107,12 +107,14 @@ struct ErrorBudget {
 
     // The split for a face whose every trimming curve is a straight line in (u, v) and whose
     // edges' points all lie on its own surface (ModelTessellator: it is each edge's curve use,
-    // or the edge is exact and another face is its curve use): a whole cylinder or torus. Its
-    // loop is exactly the region, every chord in (u, v) maps onto the curve itself, and each
-    // boundary segment lies on the side of one kd-tree cell, so its triangles at the boundary
-    // are within their cells' bound of the exact face, both ways, like the others: it has no
-    // trimming error, spends all but the half gap and the slack on its surface, and does not
-    // limit its edges' chords.
+    // or the edge is exact and another face is its curve use, or the edge is an exact pole): a
+    // whole cylinder, cone, sphere or torus. Its loop is exactly the region, every chord in
+    // (u, v) maps onto the curve itself (a pole's chords onto the pole), and each boundary
+    // segment lies on the side of one kd-tree cell, so its triangles at the boundary are within
+    // their cells' bound of the exact face, both ways, like the others: it has no trimming
+    // error, spends all but the half gap and the slack on its surface, and does not limit its
+    // edges' chords. A cell at a pole is triangulated with the pole side collapsed
+    // (triangulateCellAtPole): its corners are still all on the cell's sides.
     static ErrorBudget forChordsOnSurface(double tolerance, ErrorMode mode) {
         ErrorBudget b = of(tolerance, mode);
         if (mode != ErrorMode::Guaranteed) return b;

@@ -714,6 +714,45 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);
     };
 
+    // The ring's points on a side of the cell whose points are all one point in space (a pole:
+    // a degenerated edge, each of whose points the boundary gives its own vertex at the same
+    // position), or empty where no side is. Only a true pole: points equal but for rounding
+    // (1e-9 of the cell's coordinates). A side that is merely short in space, or a pole row
+    // a sloppy file spreads, keeps the plain triangulation: a triangle with two of its points
+    // has area there, and may be all the face has (a thin spike).
+    auto pointsAtPole = [&](const std::vector<IntegerPoint2>& ring,
+                            const std::vector<std::uint32_t>& ringIds, const Rect& r) {
+        std::vector<char> atPole(ring.size(), 0);
+        double magnitude = 0;
+        for (std::uint32_t id : ringIds)
+            if (!needsPosition[id])
+                magnitude = std::max(magnitude, mesh.vertices[id].position.cwiseAbs().maxCoeff());
+        const double samePoint = 1e-9 * magnitude;
+        bool any = false;
+        for (int side = 0; side < 4; ++side) {
+            std::vector<std::size_t> on;
+            for (std::size_t i = 0; i < ring.size(); ++i) {
+                const IntegerPoint2& p = ring[i];
+                if (side == 0   ? p.x == r.x0
+                    : side == 1 ? p.x == r.x1
+                    : side == 2 ? p.y == r.y0
+                                : p.y == r.y1)
+                    on.push_back(i);
+            }
+            if (on.size() < 2) continue;
+            bool collapsed = true;
+            const Point3& first = mesh.vertices[ringIds[on[0]]].position;
+            for (std::size_t i : on)
+                collapsed &= !needsPosition[ringIds[i]] &&
+                             (mesh.vertices[ringIds[i]].position - first).norm() <= samePoint;
+            if (!collapsed) continue;
+            for (std::size_t i : on) atPole[i] = 1;
+            any = true;
+        }
+        if (!any) atPole.clear();
+        return atPole;
+    };
+
     forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
         ++mesh.cells;
         for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines)) {
@@ -741,6 +780,21 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                 for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
                     mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
                 continue;
+            }
+            if (integerRings.size() == 1) {
+                // a cell with one side at a pole: no triangle flat against the surface there
+                const auto atPole = pointsAtPole(integerRings[0], ids, leaf.rect);
+                const auto triangles = atPole.empty()
+                                           ? std::vector<std::array<std::uint32_t, 3>>{}
+                                           : triangulateCellAtPole(integerRings[0], atPole);
+                for (const auto& t : triangles) {
+                    const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
+                    // the pole's one vertex twice: no triangle (a spike of a face is then left
+                    // without any, and fanned over its boundary like other faces too thin)
+                    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+                    mesh.triangles.push_back(tri);
+                }
+                if (!triangles.empty()) continue;
             }
             const Triangulation triangulation = triangulatePolygon(integerRings);
             for (const auto& t : triangulation.triangles) {

@@ -281,9 +281,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // A face has no trimming error at all (ErrorBudget::forChordsOnSurface) where every curve
     // of it is straight in (u, v) and the points added to it lie on its surface: it is its
     // edge's curve use, or the edge is exact and its curve use is another face's (a line
-    // between two cylinders). Not a face with a pole (a sphere, a cone's tip): its larger cells
-    // put points on a meridian next to the pole, and the triangle from the pole to two of them
-    // is flat in space.
+    // between two cylinders), or an exact pole (a sphere's or a cone's tip: every point added to
+    // it is the pole itself). The larger cells there put hanging points on a meridian next to
+    // the pole; FaceTessellator triangulates such a cell with the pole side collapsed
+    // (triangulateCellAtPole), so that no triangle joins the pole to two points of one meridian
+    // (flat in space, against the surface's normal).
     std::vector<char> chordsOnSurface(faceCount, 0);
     if (options.mode == ErrorMode::Guaranteed)
         for (int f = 0; f < faceCount; ++f) {
@@ -295,7 +297,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     const int e = face.loops[l].curves[c].edge;
                     const bool exact = model.edges[e].tolerance <= kExactEdge * options.tolerance;
                     all = curveOnSurface({f, l, c}).straightInParameterPlane() &&
-                          curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact);
+                          ((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
+                           (model.edges[e].degenerated && exact));
                 }
             if (!all) continue;
             chordsOnSurface[f] = 1;
