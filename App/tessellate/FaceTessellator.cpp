@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -13,6 +14,7 @@
 #include "tessellate/CellTriangulation.hpp"
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
+#include "tessellate/RectangleInRegion.hpp"
 
 namespace nurbslod {
 
@@ -308,28 +310,46 @@ void FaceTessellator::buildKdTree(const Paths& region) {
     struct Node {
         Rect rect;
         bool full;
-        Paths region;
+        // the parent's piece of the region, shared by both children (each reads it only)
+        std::shared_ptr<const Paths> region;
         int depth;
         int index;  // in leaves_
     };
     std::vector<Node> stack;
     leaves_.push_back({{0, 0, kScale, kScale}});
-    stack.push_back({{0, 0, kScale, kScale}, false, region, 0, 0});
+    stack.push_back({{0, 0, kScale, kScale}, false, std::make_shared<const Paths>(region), 0, 0});
     while (!stack.empty()) {
         Node node = std::move(stack.back());
         stack.pop_back();
         const Rect& r = node.rect;
         if (!node.full) {
-            if (coversWithMargin(node.region, r)) {
+            // Most cells are wholly inside or outside: told apart without clipping. The others
+            // are clipped to the cell grown by the margin, not to the cell: a child shares sides
+            // with its parent, and its margin beyond them must still be there to be covered.
+            const Rect grown{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1};
+            const RectangleInRegion where =
+                rectangleInRegion(*node.region, grown.x0, grown.y0, grown.x1, grown.y1);
+            if (where == RectangleInRegion::Outside) continue;  // as the clip would find
+            bool covered = where == RectangleInRegion::Inside;
+            if (!covered) {
+                Paths piece = clip(*node.region, grown, true);
+                // A piece with less area than the grown cell does not cover it; only one with
+                // (about) all of it needs the exact test (the rounding of doubles at 2^60).
+                double area = 0;
+                for (const auto& p : piece) area += ClipperLib::Area(p);
+                const double grownArea = double(grown.x1 - grown.x0) * double(grown.y1 - grown.y0);
+                covered =
+                    std::abs(area) >= (1 - 1e-9) * grownArea && coversWithMargin(*node.region, r);
+                if (!covered) {
+                    bool any = false;
+                    for (const auto& p : piece) any |= ClipperLib::Area(p) != 0;
+                    if (!any) continue;  // outside the trimmed region: neither leaf nor parent
+                    node.region = std::make_shared<const Paths>(std::move(piece));
+                }
+            }
+            if (covered) {
                 node.full = true;
-                node.region.clear();
-            } else {
-                // Clipped to the cell grown by the margin, not to the cell: a child shares sides
-                // with its parent, and its margin beyond them must still be there to be covered.
-                node.region = clip(node.region, {r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1}, true);
-                bool any = false;
-                for (const auto& p : node.region) any |= ClipperLib::Area(p) != 0;
-                if (!any) continue;  // outside the trimmed region: neither leaf nor parent
+                node.region.reset();
             }
         }
         leaves_[node.index].full = node.full;
@@ -344,9 +364,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             leaves_.push_back({b});
             leaves_[node.index].children[0] = ia;
             leaves_[node.index].children[1] = ia + 1;
-            stack.push_back(
-                {b, node.full, node.full ? Paths{} : node.region, node.depth + 1, ia + 1});
-            stack.push_back({a, node.full, std::move(node.region), node.depth + 1, ia});
+            stack.push_back({b, node.full, node.region, node.depth + 1, ia + 1});
+            stack.push_back({a, node.full, node.region, node.depth + 1, ia});
         };
         // first cut at Bezier span borders, nearest the middle, in the direction with more
         auto inside = [](const std::vector<cInt>& breaks, cInt lo, cInt hi) {
@@ -391,7 +410,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
         split(direction, node.full || !splitThroughBoundaryPoints_
                              ? at
-                             : throughBoundaryPoint(node.region, r, direction, at));
+                             : throughBoundaryPoint(*node.region, r, direction, at));
     }
 }
 
@@ -491,19 +510,21 @@ void FaceTessellator::forEachLeaf(
     const std::function<void(const Leaf&, const Paths&)>& visit) const {
     // The region cut down the tree node by node: each cut sees only its parent's piece, so the
     // whole walk costs about the boundary's size times the tree's depth.
-    std::vector<std::pair<int, Paths>> stack;
-    stack.push_back({0, region});
+    std::vector<std::pair<int, std::shared_ptr<const Paths>>> stack;
+    stack.push_back({0, std::make_shared<const Paths>(region)});
     while (!stack.empty()) {
         auto [index, parentRegion] = std::move(stack.back());
         stack.pop_back();
         const Leaf& node = leaves_[index];
         Paths piece;
-        if (!node.full) piece = clip(parentRegion, node.rect, true);
+        if (!node.full) piece = clip(*parentRegion, node.rect, true);
         if (node.leaf) {
             visit(node, piece);
         } else if (node.children[0] >= 0) {
-            stack.push_back({node.children[1], piece});
-            stack.push_back({node.children[0], std::move(piece)});
+            // both children read the piece: shared, not copied
+            auto shared = std::make_shared<const Paths>(std::move(piece));
+            stack.push_back({node.children[1], shared});
+            stack.push_back({node.children[0], std::move(shared)});
         }
     }
 }
