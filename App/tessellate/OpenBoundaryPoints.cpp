@@ -107,10 +107,16 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     auto planar = [&](std::uint32_t i) {
         return Point2(across.dot(position(i)), along.dot(position(i)));
     };
+    // the ring and v in that plane, once: the search below reads them O(size^3) times
+    std::vector<Point2> plane(size);
+    for (std::size_t i = 0; i < size; ++i) plane[i] = planar(ring[i]);
+    const Point2 planeV = planar(v);
+    std::vector<Point2> fromV(size);  // n_l - v in the plane
+    for (std::size_t i = 0; i < size; ++i) fromV[i] = plane[i] - planeV;
     // the old fan turns once about v (half a turn, v being on the chord), not round it again
     double turn = 0;
     for (std::size_t i = 0; i < m; ++i) {
-        const Point2 a = planar(ring[i]) - planar(v), b = planar(ring[i + 1]) - planar(v);
+        const Point2 a = fromV[i], b = fromV[i + 1];
         turn += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
     }
     if (!(turn < 1.5 * std::numbers::pi)) return std::nullopt;
@@ -130,12 +136,12 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
                 crosses = segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
             if (crosses || !allowed(ring[i], ring[j])) continue;
             double largest = 0;
+            const Point2 d2 = plane[j] - plane[i];
+            const Point2& w = fromV[i];
             for (std::size_t l = 1; l < m; ++l) {
                 if (l == i || l == j) continue;
                 // v + s (n_l - v) = n_i + r (n_j - n_i) in the plane
-                const Point2 d1 = planar(ring[l]) - planar(v);
-                const Point2 d2 = planar(ring[j]) - planar(ring[i]);
-                const Point2 w = planar(ring[i]) - planar(v);
+                const Point2& d1 = fromV[l];
                 const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
                 if (determinant == 0) continue;
                 const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
