@@ -14,6 +14,7 @@
 #include <functional>
 #include <limits>
 #include <unordered_map>
+#include <vector>
 
 namespace nurbslod::occ {
 
@@ -142,20 +143,27 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         if (known != projections.end()) return known->second;
         return projections.emplace(t, project(t)).first->second;
     };
-    constexpr int kMostSamples = 1024;
+    // Samples are added where the interpolant misses, not everywhere: the pcurve of a circle's
+    // or a helix's edge on a surface's rational form has a kink in its speed wherever it
+    // crosses a knot of the surface (the arcs' joints), and a cubic's error there only falls
+    // with the square of the spacing; uniform doubling would spend the samples on the smooth
+    // stretches (and was capped before reaching the accuracy on bottle.brep's thread alone).
+    constexpr size_t kMostSamples = 4096;
+    std::vector<double> parameters;
+    for (int k = 0; k <= 32; ++k) parameters.push_back(first + (last - first) * k / 32);
     double previousWorst = std::numeric_limits<double>::infinity();
-    for (int samples = 32; samples <= kMostSamples; samples *= 2) {
-        Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, samples + 1);
-        Handle(TColStd_HArray1OfReal) parameters = new TColStd_HArray1OfReal(1, samples + 1);
-        for (int k = 0; k <= samples; ++k) {
-            const double t = first + (last - first) * k / samples;
-            parameters->SetValue(k + 1, t);
-            points->SetValue(k + 1, sampleAt(t));
+    while (true) {
+        const int count = static_cast<int>(parameters.size());
+        Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, count);
+        Handle(TColStd_HArray1OfReal) knots = new TColStd_HArray1OfReal(1, count);
+        for (int k = 0; k < count; ++k) {
+            knots->SetValue(k + 1, parameters[k]);
+            points->SetValue(k + 1, sampleAt(parameters[k]));
         }
         if (slid) return {};
         Handle(Geom2d_BSplineCurve) result;
         try {
-            Geom2dAPI_Interpolate interpolate(points, parameters, Standard_False, 1e-15);
+            Geom2dAPI_Interpolate interpolate(points, knots, Standard_False, 1e-15);
             interpolate.Perform();
             if (!interpolate.IsDone()) return {};
             result = interpolate.Curve();
@@ -164,22 +172,27 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         }
         // the interpolant against the projections between its samples
         double worst = 0;
-        for (int k = 0; k < samples; ++k) {
-            const double t = first + (last - first) * (k + 0.5) / samples;
+        std::vector<double> refined{parameters.front()};
+        for (int k = 0; k + 1 < count; ++k) {
+            const double t = 0.5 * (parameters[k] + parameters[k + 1]);
             const gp_Pnt2d fitted = result->Value(t), projected = sampleAt(t);
-            worst = std::max(worst, adaptor.Value(fitted.X(), fitted.Y())
-                                        .Distance(adaptor.Value(projected.X(), projected.Y())));
+            const double miss = adaptor.Value(fitted.X(), fitted.Y())
+                                    .Distance(adaptor.Value(projected.X(), projected.Y()));
+            worst = std::max(worst, miss);
+            if (miss > 0.01 * accuracy && t > parameters[k] && t < parameters[k + 1])
+                refined.push_back(t);
+            refined.push_back(parameters[k + 1]);
         }
         // a hundredth of the accuracy asked for is far below any tolerance; a curve that does
         // not get there (a kink in the 3D curve) is kept if it is within the accuracy itself,
-        // as soon as more samples stop bringing it closer (each round costs twice the last)
+        // as soon as more samples stop bringing it closer
         if (worst <= 0.01 * accuracy) return asLineWherePossible(result);
         if (worst <= accuracy && worst > 0.5 * previousWorst) return asLineWherePossible(result);
-        if (samples == kMostSamples)
+        if (refined.size() > kMostSamples || refined.size() == parameters.size())
             return worst <= accuracy ? asLineWherePossible(result) : Handle(Geom2d_BSplineCurve)();
         previousWorst = worst;
+        parameters = std::move(refined);
     }
-    return {};
 }
 
 }  // namespace nurbslod::occ
