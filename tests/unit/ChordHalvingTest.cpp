@@ -22,6 +22,7 @@
 #include <map>
 #include <vector>
 
+#include "WeldedOpenEdges.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "tessellate/ModelTessellator.hpp"
@@ -76,32 +77,9 @@ private:
 
 // Open edges (meshjudge's weld) inside the rectangle: the tiling's outer sides are free edges.
 int innerOpenEdges(const Mesh& mesh, double tolerance) {
-    const double quantum = std::max(tolerance * 1e-3, 1e-9);
-    std::map<std::array<std::int64_t, 3>, std::uint32_t> cellIds;
-    std::vector<std::uint32_t> welded(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        std::array<std::int64_t, 3> key;
-        for (int axis = 0; axis < 3; ++axis)
-            key[axis] =
-                static_cast<std::int64_t>(std::nearbyint(mesh.positions[i][axis] / quantum));
-        welded[i] = cellIds.emplace(key, static_cast<std::uint32_t>(cellIds.size())).first->second;
-    }
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, Point3>> uses;
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = welded[t[k]], b = welded[t[(k + 1) % 3]];
-            if (a == b) continue;
-            auto& use = uses[{std::min(a, b), std::max(a, b)}];
-            ++use.first;
-            use.second = 0.5 * (mesh.positions[t[k]] + mesh.positions[t[(k + 1) % 3]]);
-        }
-    int count = 0;
-    for (const auto& [edge, use] : uses) {
-        const Point3& middle = use.second;
-        count += use.first == 1 && middle.x() > -1 + 1e-6 && middle.x() < 2 - 1e-6 &&
-                 std::abs(middle.y()) < 1 - 1e-6;
-    }
-    return count;
+    return test::weldedOpenEdgesWhere(mesh, tolerance, [](const Point3& middle) {
+        return middle.x() > -1 + 1e-6 && middle.x() < 2 - 1e-6 && std::abs(middle.y()) < 1 - 1e-6;
+    });
 }
 
 Mesh expectClosedAndWithinTolerance(const TopoDS_Shape& shape) {

@@ -23,6 +23,7 @@
 #include <map>
 #include <vector>
 
+#include "WeldedOpenEdges.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "tessellate/ModelTessellator.hpp"
@@ -161,33 +162,10 @@ struct SloppyPair {
 
 // Open edges (meshjudge's weld) whose middle lies along the shared edge, away from its ends.
 int openEdgesAlongSharedEdge(const Mesh& mesh, double tolerance, const SloppyPair& pair) {
-    const double quantum = std::max(tolerance * 1e-3, 1e-9);
-    std::map<std::array<std::int64_t, 3>, std::uint32_t> cellIds;
-    std::vector<std::uint32_t> welded(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        std::array<std::int64_t, 3> key;
-        for (int axis = 0; axis < 3; ++axis)
-            key[axis] =
-                static_cast<std::int64_t>(std::nearbyint(mesh.positions[i][axis] / quantum));
-        welded[i] = cellIds.emplace(key, static_cast<std::uint32_t>(cellIds.size())).first->second;
-    }
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, Point3>> uses;
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = welded[t[k]], b = welded[t[(k + 1) % 3]];
-            if (a == b) continue;
-            auto& use = uses[{std::min(a, b), std::max(a, b)}];
-            ++use.first;
-            use.second = 0.5 * (mesh.positions[t[k]] + mesh.positions[t[(k + 1) % 3]]);
-        }
-    int count = 0;
-    for (const auto& [edge, use] : uses) {
-        const Point3& middle = use.second;
-        const bool along = use.first == 1 && std::abs(middle.x()) < 0.5 * pair.length &&
-                           middle.y() > 1e-6 && middle.y() < pair.width - 1e-6;
-        count += along;
-    }
-    return count;
+    return test::weldedOpenEdgesWhere(mesh, tolerance, [&](const Point3& middle) {
+        return std::abs(middle.x()) < 0.5 * pair.length && middle.y() > 1e-6 &&
+               middle.y() < pair.width - 1e-6;
+    });
 }
 
 // The bow is 5 T: each face's own points are 5 T from where the planes cross, within the
