@@ -25,6 +25,7 @@ import datetime
 import json
 import os
 import platform
+import re
 import shlex
 import subprocess
 import sys
@@ -37,6 +38,20 @@ MODEL_EXTENSIONS = (".stp", ".step", ".iges", ".igs", ".brep", ".brp")
 METHODS = ("nurbslod-guaranteed", "nurbslod-approximate", "brepmesh")
 # The independent judge, in ../shared/tools beside the checkout.
 JUDGE = os.path.join(os.path.dirname(REPO), "shared", "tools", "meshjudge.py")
+
+
+def portable(value, places):
+    """value (nested dicts, lists, strings) with each folder in `places` (path -> name) written
+    as its name, so that the committed report names no folder of the machine it ran on."""
+    if isinstance(value, dict):
+        return {k: portable(v, places) for k, v in value.items()}
+    if isinstance(value, list):
+        return [portable(v, places) for v in value]
+    if isinstance(value, str):
+        for path, name in places:
+            value = re.sub(re.escape(path.rstrip("/")) + r"(?=/|\s|$)", name, value)
+        return value
+    return value
 
 
 def last_json(text):
@@ -315,7 +330,13 @@ def main():
                   for (rel, method, key), q in sorted(means.items())]
     print("\nGeometric means over models:\n" + "\n".join(mean_lines))
 
-    command = " ".join(shlex.quote(a) for a in [sys.executable] + sys.argv)
+    # longest first: the build folder lies inside the checkout
+    places = sorted([(os.path.abspath(args.build), "build"), (os.path.abspath(args.corpus), "corpus"),
+                     (os.path.abspath(workdir), "OUT"), (REPO, ".")], key=lambda p: -len(p[0]))
+    places += [(p, name) for p, name in [(args.build, "build"), (args.corpus, "corpus"),
+                                         (workdir, "OUT")] if not os.path.isabs(p)]
+    command = portable(" ".join(shlex.quote(a) for a in ["python3"] + sys.argv), places)
+    results = portable(results, places)
     now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
     notes = []
     for r in results:
@@ -371,7 +392,7 @@ def main():
                    "threads": args.threads, "seconds": total, "results": results,
                    "ratio_geomeans": {"R=%g %s/brepmesh %s" % k: v for k, v in means.items()}},
                   fh, indent=1)
-    print("\nwrote %s and %s (meshes in %s)" % (args.md, args.json, workdir))
+    print("\nwrote %s and %s (meshes in %s, OUT in the report)" % (args.md, args.json, workdir))
     if notes:
         print("\n".join(notes))
     return 0
