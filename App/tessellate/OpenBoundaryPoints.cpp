@@ -60,71 +60,98 @@ bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Poin
     return ((c1 > 0 && c2 < 0) || (c1 < 0 && c2 > 0)) && ((c3 > 0 && c4 < 0) || (c3 < 0 && c4 > 0));
 }
 
-// The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that v lies on) that
-// least changes the surface, and that change. Both the old fan and the new triangles are graphs
-// of heights along the fan's mean normal over one region of the plane normal to it, where every
-// triangle faces that normal: a point of the new triangles is then within their height
-// difference of the old fan. The difference is linear on the overlay of the two triangulations,
-// so it is largest at the overlay's vertices: the ring's points (no difference), v (on the new
-// chord) and where an old edge (v, n_i) crosses a new diagonal. Each diagonal's largest
-// difference is its own, so the best triangulation is found by the polygon triangulation
-// recurrence over the ring, minimising the largest difference. None where no triangulation is
-// valid in (u, v) and in space. `allowed` tells whether a diagonal may be made (it must not
-// already be an edge outside the fan).
-constexpr std::size_t kLargestRing = 64;
-
-template <class Allowed>
+// The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that the points to drop
+// lie on) that least changes the surface, and that change. `old` are the triangles about those
+// points (their union is a disk whose boundary is the ring and the chord). Both the old
+// triangles and the new ones are graphs of heights along their mean normal over one region of
+// the plane normal to it, where every triangle faces that normal: a point of the new triangles
+// is then within their height difference of the old ones. The difference is linear on the
+// overlay of the two triangulations, so it is largest at the overlay's vertices: the ring's
+// points (no difference), the dropped points (on the new chord) and where an old inner edge
+// crosses a new diagonal. Each diagonal's largest difference is its own, so the best
+// triangulation is found by the polygon triangulation recurrence over the ring, minimising the
+// largest difference. None where no triangulation is valid in (u, v) and in space.
+// forbidden[i * ring.size() + j] tells that the diagonal (i, j) may not be made (it is already
+// an edge outside the old triangles).
 std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulation(
-    std::uint32_t v, const std::vector<std::uint32_t>& ring, const FaceMesh& mesh,
-    const Allowed& allowed) {
+    const std::vector<std::uint32_t>& dropped, const std::vector<std::uint32_t>& ring,
+    const std::vector<Triangle>& old, const FaceMesh& mesh, const std::vector<char>& forbidden) {
     constexpr double kNever = std::numeric_limits<double>::infinity();
     auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
-    auto uv = [&](std::size_t i) -> const Point2& { return mesh.vertices[ring[i]].uv; };
+    std::vector<Point2> ringUv(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) ringUv[i] = mesh.vertices[ring[i]].uv;
+    auto uv = [&](std::size_t i) -> const Point2& { return ringUv[i]; };
     auto areaNormal = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) -> Vector3 {
         return (position(b) - position(a)).cross(position(c) - position(a));
     };
     const std::size_t size = ring.size(), m = size - 1;
-    // The search is cubic in the ring: the fans of wing.brep's free edges at relative 1e-4 (up
-    // to hundreds of triangles about one point) took 88% of its tessellation time (1.38 s).
-    // Larger fans keep their point: 64 gives 0.60 s and 145 open edges there (139 unbounded;
-    // 32: 0.22 s, 179), and still 50 at relative 1e-3.
-    // The large fans are made by the removals themselves: each one's new triangles join the fan
-    // of the next point along the same chord. Of the 18 points wing keeps beyond its 127 free
-    // chords at relative 1e-4, 13 have rings of 65 or 66 (5 are over the allowance); unbounded
-    // gives 132 (3.5 s against 1.6 s with 64, measured back to back).
-    if (size > kLargestRing) return std::nullopt;
     Vector3 normal = Vector3::Zero();
-    for (std::size_t i = 0; i < m; ++i) normal += areaNormal(v, ring[i], ring[i + 1]);
+    for (const Triangle& t : old) normal += areaNormal(t[0], t[1], t[2]);
     if (!(normal.norm() > 0)) return std::nullopt;
     normal.normalize();
     auto facesNormal = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
         const Vector3 n = areaNormal(a, b, c);
         return n.dot(normal) > 1e-6 * n.norm();
     };
-    for (std::size_t i = 0; i < m; ++i)
-        if (!facesNormal(v, ring[i], ring[i + 1])) return std::nullopt;
+    for (const Triangle& t : old)
+        if (!facesNormal(t[0], t[1], t[2])) return std::nullopt;
     const Vector3 across = normal.unitOrthogonal(), along = normal.cross(across);
     auto planar = [&](std::uint32_t i) {
         return Point2(across.dot(position(i)), along.dot(position(i)));
     };
-    // the ring and v in that plane, once: the search below reads them O(size^3) times
-    std::vector<Point2> plane(size);
-    for (std::size_t i = 0; i < size; ++i) plane[i] = planar(ring[i]);
-    const Point2 planeV = planar(v);
-    std::vector<Point2> fromV(size);  // n_l - v in the plane
-    for (std::size_t i = 0; i < size; ++i) fromV[i] = plane[i] - planeV;
-    // the old fan turns once about v (half a turn, v being on the chord), not round it again
-    double turn = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const Point2 a = fromV[i], b = fromV[i + 1];
-        turn += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    // the ring's points in the plane and their heights along the normal, once
+    std::vector<Point2> ringPlanar(size);
+    std::vector<double> ringHeight(size);
+    for (std::size_t i = 0; i < size; ++i) {
+        ringPlanar[i] = planar(ring[i]);
+        ringHeight[i] = normal.dot(position(ring[i]));
     }
-    if (!(turn < 1.5 * std::numbers::pi)) return std::nullopt;
+    // One sheet: every old triangle faces the normal, so each point of the plane inside the
+    // boundary is covered as many times as the boundary winds round it, once where the ring
+    // closed by the chord is a simple polygon in the plane.
+    for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = i + 2; j < size; ++j) {
+            if (i == 0 && j == m) continue;  // adjacent through the chord
+            if (segmentsCross(ringPlanar[i], ringPlanar[(i + 1) % size], ringPlanar[j],
+                              ringPlanar[(j + 1) % size]))
+                return std::nullopt;
+        }
+    if (dropped.size() == 1) {
+        // the old fan turns once about its point (half a turn, the point being on the chord)
+        const Point2 centre = planar(dropped.front());
+        double turn = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+            const Point2 a = ringPlanar[i] - centre, b = ringPlanar[i + 1] - centre;
+            turn += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+        }
+        if (!(turn < 1.5 * std::numbers::pi)) return std::nullopt;
+    }
     double extent = 0;
     for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = 0; j < size; ++j)
             extent = std::max(extent, (uv(i) - uv(j)).squaredNorm());
     const double minimumArea = 1e-14 * extent;
+
+    // the old inner edges (each in two old triangles), in the plane with their heights
+    struct PlanarEdge {
+        std::uint32_t a, b;
+        Point2 from, to;
+        double fromHeight, toHeight;
+    };
+    std::vector<PlanarEdge> inner;
+    for (std::size_t t = 0; t < old.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = old[t][k], b = old[t][(k + 1) % 3];
+            if (a > b) continue;  // each inner edge once, from the side where a < b
+            const bool twice = std::any_of(old.begin(), old.end(), [&](const Triangle& other) {
+                for (int l = 0; l < 3; ++l)
+                    if (other[l] == b && other[(l + 1) % 3] == a) return true;
+                return false;
+            });
+            if (twice)
+                inner.push_back(
+                    {a, b, planar(a), planar(b), normal.dot(position(a)), normal.dot(position(b))});
+        }
 
     // the largest height difference along the diagonal (i, j), infinite where it may not be made
     std::vector<std::vector<double>> diagonal(size, std::vector<double>(size, kNever));
@@ -134,23 +161,24 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             bool crosses = false;
             for (std::size_t k = 0; k < m && !crosses; ++k)
                 crosses = segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
-            if (crosses || !allowed(ring[i], ring[j])) continue;
+            if (crosses || forbidden[i * size + j]) continue;
             double largest = 0;
-            const Point2 d2 = plane[j] - plane[i];
-            const Point2& w = fromV[i];
-            for (std::size_t l = 1; l < m; ++l) {
-                if (l == i || l == j) continue;
-                // v + s (n_l - v) = n_i + r (n_j - n_i) in the plane
-                const Point2& d1 = fromV[l];
+            const Point2 d2 = ringPlanar[j] - ringPlanar[i];
+            for (const PlanarEdge& edge : inner) {
+                if (edge.a == ring[i] || edge.a == ring[j] || edge.b == ring[i] ||
+                    edge.b == ring[j])
+                    continue;  // meets the diagonal at a ring point: no difference
+                // from + s (to - from) = n_i + r (n_j - n_i) in the plane
+                const Point2 d1 = edge.to - edge.from;
+                const Point2 w = ringPlanar[i] - edge.from;
                 const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
                 if (determinant == 0) continue;
                 const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
                 const double r = (w.x() * d1.y() - w.y() * d1.x()) / determinant;
                 if (s < 0 || s > 1 || r < 0 || r > 1) continue;
-                const double old = normal.dot(position(v) + s * (position(ring[l]) - position(v)));
-                const double now =
-                    normal.dot(position(ring[i]) + r * (position(ring[j]) - position(ring[i])));
-                largest = std::max(largest, std::abs(old - now));
+                const double was = edge.fromHeight + s * (edge.toHeight - edge.fromHeight);
+                const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
+                largest = std::max(largest, std::abs(was - now));
             }
             diagonal[i][j] = largest;
         }
@@ -197,9 +225,79 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     const Point3& first = position(ring.front());
     const Point3& last = position(ring.back());
     const Vector3 chord = first - last;
-    const double t = std::clamp((position(v) - last).dot(chord) / chord.squaredNorm(), 0.0, 1.0);
-    return std::make_pair(std::move(triangles),
-                          std::max(cost[0][m], (last + t * chord - position(v)).norm()));
+    double change = cost[0][m];
+    for (std::uint32_t v : dropped) {
+        const double t =
+            std::clamp((position(v) - last).dot(chord) / chord.squaredNorm(), 0.0, 1.0);
+        change = std::max(change, (last + t * chord - position(v)).norm());
+    }
+    return std::make_pair(std::move(triangles), change);
+}
+
+// The search is cubic in the ring. Dropped one by one, the points of one chord made each fan
+// join the next one's, and the grown ring was searched again for every point: wing.brep's free
+// edges at relative 1e-4 had rings of hundreds, 88% of its tessellation time. A fan alone keeps
+// its point beyond 64; all the points of a chord at once are searched up to 256 (wing: 0.8 s
+// -> 0.4 s, 145 -> 135 open edges).
+constexpr std::size_t kLargestRing = 64;
+constexpr std::size_t kLargestChordRing = 256;
+
+// v lies on the chord from `last` to `first` in space, strictly between them.
+bool onChord(const FaceMesh& mesh, std::uint32_t v, std::uint32_t last, std::uint32_t first) {
+    const Point3& from = mesh.vertices[last].position;
+    const Vector3 chord = mesh.vertices[first].position - from;
+    const double length2 = chord.squaredNorm();
+    if (!(length2 > 0)) return false;
+    const Vector3 fromLast = mesh.vertices[v].position - from;
+    const double t = fromLast.dot(chord) / length2;
+    return t > 0 && t < 1 && (fromLast - t * chord).squaredNorm() <= 1e-18 * length2;
+}
+
+// The disk of the live triangles about `points` (consecutive points of one chord): its boundary
+// from the chord's one end round to the other (the ring n0 .. nm, the points then following
+// from nm back to n0), and its triangles; none where they are not one disk with every vertex
+// on that boundary.
+std::optional<std::pair<std::vector<std::uint32_t>, std::vector<std::size_t>>> diskAbout(
+    const std::vector<std::uint32_t>& points, const std::vector<Triangle>& triangles,
+    const std::vector<std::vector<std::size_t>>& trianglesOf, const std::vector<char>& removed) {
+    std::vector<std::size_t> disk;
+    for (std::uint32_t p : points)
+        for (std::size_t t : trianglesOf[p])
+            if (!removed[t]) disk.push_back(t);
+    std::sort(disk.begin(), disk.end());
+    disk.erase(std::unique(disk.begin(), disk.end()), disk.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges, boundary;
+    for (std::size_t t : disk)
+        for (int k = 0; k < 3; ++k) edges.push_back({triangles[t][k], triangles[t][(k + 1) % 3]});
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [a, b] : edges)
+        if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(b, a)))
+            boundary.push_back({a, b});
+    // one boundary edge out of every vertex, one cycle through all of them
+    std::vector<std::uint32_t> vertices;
+    for (const auto& [a, b] : edges) vertices.push_back(a);
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    if (boundary.size() != vertices.size() || disk.size() + 2 != vertices.size())
+        return std::nullopt;
+    for (std::size_t i = 0; i + 1 < boundary.size(); ++i)
+        if (boundary[i].first == boundary[i + 1].first) return std::nullopt;
+    auto next = [&](std::uint32_t a) {
+        return std::lower_bound(boundary.begin(), boundary.end(), std::make_pair(a, 0u))->second;
+    };
+    // the cycle runs ..., nm, the points from the last to the first, n0, ...
+    std::vector<std::uint32_t> cycle{next(points.front())};
+    while (cycle.size() < vertices.size() && cycle.back() != points.back())
+        cycle.push_back(next(cycle.back()));
+    if (cycle.back() != points.back()) return std::nullopt;
+    cycle.pop_back();
+    if (cycle.size() + points.size() != vertices.size()) return std::nullopt;
+    std::uint32_t at = points.back();
+    for (std::size_t k = points.size(); k-- > 0;) {
+        if (at != points[k]) return std::nullopt;
+        at = next(at);
+    }
+    if (at != cycle.front()) return std::nullopt;
+    return std::make_pair(std::move(cycle), std::move(disk));
 }
 
 }  // namespace
@@ -211,50 +309,118 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         for (std::uint32_t i : mesh.triangles[t]) trianglesOf[i].push_back(t);
     std::vector<char> removed(mesh.triangles.size(), 0);
+    // how far each triangle may be from the face's first triangles: a re-triangulation of
+    // triangles that an earlier one made adds to what that one changed
+    std::vector<double> changed(mesh.triangles.size(), 0.0);
+    std::vector<char> dropped(vertexCount, 0), chordTried(vertexCount, 0);
     std::size_t count = 0;
-    for (std::uint32_t v = 0; v < vertexCount; ++v) {
-        if (mesh.vertices[v].shared) continue;  // another face has it: it must stay
+
+    // the ring about v where v is the face's own point, its triangles one fan, and it lies on
+    // the chord between its two boundary neighbours in space
+    auto chordRing = [&](std::uint32_t v) -> std::optional<std::vector<std::uint32_t>> {
+        if (mesh.vertices[v].shared || dropped[v]) return std::nullopt;
         std::vector<std::size_t>& fan = trianglesOf[v];
         fan.erase(std::remove_if(fan.begin(), fan.end(), [&](std::size_t t) { return removed[t]; }),
                   fan.end());
-        if (fan.size() < 2) continue;
-        const auto ring = ringAround(v, mesh.triangles, fan);
-        if (!ring) continue;
-        // v must lie on the chord between its two boundary neighbours, in space
-        const Point3& first = mesh.vertices[ring->front()].position;
-        const Point3& last = mesh.vertices[ring->back()].position;
-        const Vector3 chord = first - last;
-        const double length2 = chord.squaredNorm();
-        if (!(length2 > 0)) continue;
-        const Vector3 fromLast = mesh.vertices[v].position - last;
-        const double t = fromLast.dot(chord) / length2;
-        if (!(t > 0 && t < 1) || (fromLast - t * chord).squaredNorm() > 1e-18 * length2) continue;
-        // a new diagonal that is already an edge outside the fan would make a non-manifold edge
-        auto allowed = [&](std::uint32_t a, std::uint32_t b) {
-            for (std::size_t t2 : trianglesOf[a]) {
-                if (removed[t2] || std::find(fan.begin(), fan.end(), t2) != fan.end()) continue;
-                const Triangle& other = mesh.triangles[t2];
-                if (std::find(other.begin(), other.end(), b) != other.end()) return false;
+        if (fan.empty()) return std::nullopt;
+        auto ring = ringAround(v, mesh.triangles, fan);
+        if (!ring || !onChord(mesh, v, ring->back(), ring->front())) return std::nullopt;
+        return ring;
+    };
+
+    // drops `points` (consecutive on one chord, the first next to the ring's first point) when
+    // their disk's re-triangulation is within the allowance
+    auto drop = [&](const std::vector<std::uint32_t>& points, std::size_t largestRing) {
+        const auto disk = diskAbout(points, mesh.triangles, trianglesOf, removed);
+        if (!disk) return false;
+        const auto& [ring, inside] = *disk;
+        const std::size_t size = ring.size();
+        if (size < 3 || size > largestRing) return false;
+        // a new diagonal that is already an edge outside the disk would make a non-manifold edge
+        std::vector<char> forbidden(size * size, 0);
+        for (std::size_t a = 0; a < size; ++a)
+            for (std::size_t t : trianglesOf[ring[a]]) {
+                if (removed[t] || std::binary_search(inside.begin(), inside.end(), t)) continue;
+                for (std::uint32_t b : mesh.triangles[t]) {
+                    const auto at = std::find(ring.begin(), ring.end(), b);
+                    if (at == ring.end()) continue;
+                    const std::size_t j = static_cast<std::size_t>(at - ring.begin());
+                    forbidden[a * size + j] = forbidden[j * size + a] = 1;
+                }
             }
-            return true;
-        };
-        const auto best = leastChangingTriangulation(v, *ring, mesh, allowed);
-        if (!best) continue;
+        std::vector<Triangle> old;
+        for (std::size_t t : inside) old.push_back(mesh.triangles[t]);
+        const auto best = leastChangingTriangulation(points, ring, old, mesh, forbidden);
+        if (!best) return false;
         double ringOffset = 0;
-        for (std::uint32_t i : *ring)
+        for (std::uint32_t i : ring)
             if (mesh.vertices[i].shared)
                 ringOffset = std::max(ringOffset, sharedOffsets[mesh.vertices[i].sharedId]);
-        if (best->second + ringOffset > allowance) continue;
-        const std::vector<Triangle>& replacement = best->first;
-        for (std::size_t t : fan) removed[t] = 1;
-        fan.clear();
-        for (const Triangle& triangle : replacement) {
+        double before = 0;
+        for (std::size_t t : inside) before = std::max(before, changed[t]);
+        if (before + best->second + ringOffset > allowance) return false;
+        for (std::size_t t : inside) removed[t] = 1;
+        for (std::uint32_t p : points) {
+            dropped[p] = 1;
+            trianglesOf[p].clear();
+        }
+        for (const Triangle& triangle : best->first) {
             const std::size_t index = mesh.triangles.size();
             mesh.triangles.push_back(triangle);
             removed.push_back(0);
+            changed.push_back(before + best->second);
             for (std::uint32_t i : triangle) trianglesOf[i].push_back(index);
         }
-        ++count;
+        count += points.size();
+        return true;
+    };
+
+    for (std::uint32_t v = 0; v < vertexCount; ++v) {
+        const auto ring = chordRing(v);
+        if (!ring) continue;
+        if (!chordTried[v]) {
+            // every such point of v's chord at once: dropped one by one, each one's new
+            // triangles join the next one's fan, whose ring grows with every point
+            std::vector<std::uint32_t> points{v};
+            for (std::uint32_t previous = v, next = ring->front(); points.size() < vertexCount;) {
+                const auto nextRing = chordRing(next);
+                if (!nextRing || nextRing->back() != previous) break;
+                points.insert(points.begin(), next);
+                previous = next;
+                next = nextRing->front();
+            }
+            for (std::uint32_t previous = v, next = ring->back(); points.size() < vertexCount;) {
+                const auto nextRing = chordRing(next);
+                if (!nextRing || nextRing->front() != previous) break;
+                points.push_back(next);
+                previous = next;
+                next = nextRing->back();
+            }
+            for (std::uint32_t p : points) chordTried[p] = 1;
+            if (points.size() > 1) {
+                const std::uint32_t first = chordRing(points.front())->front();
+                const std::uint32_t last = chordRing(points.back())->back();
+                const bool oneChord =
+                    std::all_of(points.begin(), points.end(),
+                                [&](std::uint32_t p) { return onChord(mesh, p, last, first); });
+                if (oneChord) {
+                    // all at once, else each half (the halves' rings then hold the points the
+                    // other half keeps, still on the chord)
+                    std::vector<std::vector<std::uint32_t>> runs{points};
+                    while (!runs.empty()) {
+                        const std::vector<std::uint32_t> run = std::move(runs.back());
+                        runs.pop_back();
+                        if (drop(run, kLargestChordRing) || run.size() == 1) continue;
+                        const auto middle = run.begin() + run.size() / 2;
+                        runs.emplace_back(middle, run.end());
+                        runs.emplace_back(run.begin(), middle);
+                    }
+                    continue;
+                }
+            }
+        }
+        // v alone, its fan as it is now
+        drop({v}, kLargestRing);
     }
     std::size_t out = 0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)

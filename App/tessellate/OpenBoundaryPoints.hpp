@@ -10,12 +10,14 @@ namespace nurbslod {
 // Removes the face's own points from the chords of its open boundary (a free edge, or a sloppy
 // edge whose faces keep separate polylines): a kd-tree cell side that crosses such a chord
 // leaves a vertex on it that no other face shares, and every such vertex is one more open edge
-// of the mesh. The vertex's fan is re-triangulated without it when the new triangles are valid
-// in (u, v) and the new surface is within `allowance` of the old one, less the share budget
-// that the fan's shared vertices already spend (sharedOffsets, by shared id): the new triangles
-// then stay within the face's bound, as the share budget was the one part of it left unspent.
-// Works in (u, v) counter-clockwise order, before any reversal of the face. Returns how many
-// points were removed.
+// of the mesh. All such vertices of one chord go at once: the union of their fans is
+// re-triangulated without them when the new triangles are valid in (u, v) and the new surface is
+// within `allowance` of the first one, less the share budget that the ring's shared vertices
+// already spend (sharedOffsets, by shared id): the new triangles then stay within the face's
+// bound, as the share budget was the one part of it left unspent. Where that fails, each half
+// of the chord's vertices is tried, then each vertex alone; a re-triangulation of triangles an
+// earlier one made counts that one's change too. Works in (u, v) counter-clockwise order, before
+// any reversal of the face. Returns how many points were removed.
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
                                      double allowance);
 

@@ -213,3 +213,52 @@ TEST(OpenEdges, ChordPointIsDroppedOnlyWithinTheAllowance) {
 
 }  // namespace
 }  // namespace nurbslod
+
+namespace nurbslod {
+namespace {
+
+// A flat band whose lower side is one chord (a, b) of an open boundary that `count` kd-tree cell
+// sides crossed, each leaving a point of the face's own on it, and whose upper side is a row of
+// shared points; in (u, v) and in space it is the strip 0 <= u <= 1, 0 <= v <= 0.1.
+FaceMesh bandOnChord(std::uint32_t count) {
+    FaceMesh mesh;
+    auto add = [&](double u, double v, bool shared) {
+        FaceMesh::Vertex vertex;
+        vertex.uv = Point2(u, v);
+        vertex.position = Point3(u, v, 0);
+        vertex.shared = shared;
+        vertex.sharedId = static_cast<std::uint32_t>(mesh.vertices.size());
+        mesh.vertices.push_back(vertex);
+        return static_cast<std::uint32_t>(mesh.vertices.size() - 1);
+    };
+    std::vector<std::uint32_t> lower(count + 2), upper;
+    for (std::uint32_t i = 0; i <= count + 1; ++i)
+        upper.push_back(add(double(i) / (count + 1), 0.1, true));
+    lower.front() = add(0, 0, true);
+    lower.back() = add(1, 0, true);
+    // numbered from right to left: each point's least-changing triangles fan out from its left
+    // neighbour, the next one to go
+    for (std::uint32_t i = count; i >= 1; --i) lower[i] = add(double(i) / (count + 1), 0, false);
+    for (std::uint32_t i = 0; i <= count; ++i) {
+        mesh.triangles.push_back({lower[i], lower[i + 1], upper[i + 1]});
+        mesh.triangles.push_back({lower[i], upper[i + 1], upper[i]});
+    }
+    return mesh;
+}
+
+TEST(OpenEdges, EveryPointOfALongChordIsDropped) {
+    // Dropped one at a time, each point's new triangles joined the next one's fan, whose ring
+    // grew past the search's limit, and one of these 80 stayed on the chord (an open edge more).
+    // All the points of one chord go in one search of their triangles' union.
+    constexpr std::uint32_t count = 80;
+    FaceMesh band = bandOnChord(count);
+    EXPECT_EQ(removeOpenBoundaryPoints(band, std::vector<double>(2 * count + 4, 0.0), 1e-6), count);
+    std::vector<Point3> positions;
+    for (const auto& vertex : band.vertices) positions.push_back(vertex.position);
+    // the band's outline: the chord, its two ends and the upper row's count + 1 sides
+    EXPECT_EQ(openEdges(positions, band.triangles, 1e-3), std::size_t(count + 4));
+    EXPECT_EQ(band.triangles.size(), std::size_t(count + 2));
+}
+
+}  // namespace
+}  // namespace nurbslod
