@@ -72,10 +72,13 @@ bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Poin
 // triangulation is found by the polygon triangulation recurrence over the ring, minimising the
 // largest difference. None where no triangulation is valid in (u, v) and in space.
 // forbidden[i * ring.size() + j] tells that the diagonal (i, j) may not be made (it is already
-// an edge outside the old triangles).
+// an edge outside the old triangles). None too where every triangulation changes the surface by
+// more than `limit` (what the caller could still accept): the diagonals that alone change it
+// more are not searched, which leaves the best one, if it is within the limit, as it was.
 std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulation(
     const std::vector<std::uint32_t>& dropped, const std::vector<std::uint32_t>& ring,
-    const std::vector<Triangle>& old, const FaceMesh& mesh, const std::vector<char>& forbidden) {
+    const std::vector<Triangle>& old, const FaceMesh& mesh, const std::vector<char>& forbidden,
+    double limit) {
     constexpr double kNever = std::numeric_limits<double>::infinity();
     auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
     std::vector<Point2> ringUv(ring.size());
@@ -85,6 +88,17 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         return (position(b) - position(a)).cross(position(c) - position(a));
     };
     const std::size_t size = ring.size(), m = size - 1;
+    // how far the dropped points are from the chord, which the new triangles follow there
+    const Point3& first = position(ring.front());
+    const Point3& last = position(ring.back());
+    const Vector3 chord = first - last;
+    double ontoChord = 0;
+    for (std::uint32_t v : dropped) {
+        const double t =
+            std::clamp((position(v) - last).dot(chord) / chord.squaredNorm(), 0.0, 1.0);
+        ontoChord = std::max(ontoChord, (last + t * chord - position(v)).norm());
+    }
+    if (ontoChord > limit) return std::nullopt;
     Vector3 normal = Vector3::Zero();
     for (const Triangle& t : old) normal += areaNormal(t[0], t[1], t[2]);
     if (!(normal.norm() > 0)) return std::nullopt;
@@ -158,10 +172,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = i + 2; j < size; ++j) {
             if (i == 0 && j == m) continue;  // the chord: the polygon's own side
-            bool crosses = false;
-            for (std::size_t k = 0; k < m && !crosses; ++k)
-                crosses = segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
-            if (crosses || forbidden[i * size + j]) continue;
+            if (forbidden[i * size + j]) continue;
             double largest = 0;
             const Point2 d2 = ringPlanar[j] - ringPlanar[i];
             for (const PlanarEdge& edge : inner) {
@@ -179,7 +190,16 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
                 const double was = edge.fromHeight + s * (edge.toHeight - edge.fromHeight);
                 const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
                 largest = std::max(largest, std::abs(was - now));
+                if (largest > limit) break;
             }
+            // A diagonal that alone changes the surface by more than the limit is in no
+            // triangulation the caller could take: the search leaves it out (its cost stays
+            // infinite) without testing its crossings.
+            if (largest > limit) continue;
+            bool crosses = false;
+            for (std::size_t k = 0; k < m && !crosses; ++k)
+                crosses = segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
+            if (crosses) continue;
             diagonal[i][j] = largest;
         }
     auto sideCost = [&](std::size_t i, std::size_t j) {
@@ -222,16 +242,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         pending.push_back({i, k});
         pending.push_back({k, j});
     }
-    const Point3& first = position(ring.front());
-    const Point3& last = position(ring.back());
-    const Vector3 chord = first - last;
-    double change = cost[0][m];
-    for (std::uint32_t v : dropped) {
-        const double t =
-            std::clamp((position(v) - last).dot(chord) / chord.squaredNorm(), 0.0, 1.0);
-        change = std::max(change, (last + t * chord - position(v)).norm());
-    }
-    return std::make_pair(std::move(triangles), change);
+    return std::make_pair(std::move(triangles), std::max(cost[0][m], ontoChord));
 }
 
 // The search is cubic in the ring. Dropped one by one, the points of one chord made each fan
@@ -350,14 +361,16 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
             }
         std::vector<Triangle> old;
         for (std::size_t t : inside) old.push_back(mesh.triangles[t]);
-        const auto best = leastChangingTriangulation(points, ring, old, mesh, forbidden);
-        if (!best) return false;
         double ringOffset = 0;
         for (std::uint32_t i : ring)
             if (mesh.vertices[i].shared)
                 ringOffset = std::max(ringOffset, sharedOffsets[mesh.vertices[i].sharedId]);
         double before = 0;
         for (std::size_t t : inside) before = std::max(before, changed[t]);
+        const double limit = allowance - before - ringOffset;
+        if (!(limit >= 0)) return false;
+        const auto best = leastChangingTriangulation(points, ring, old, mesh, forbidden, limit);
+        if (!best) return false;
         if (before + best->second + ringOffset > allowance) return false;
         for (std::size_t t : inside) removed[t] = 1;
         for (std::uint32_t p : points) {
