@@ -77,7 +77,7 @@ bool coversWithMargin(const Paths& region, const Rect& r) {
 double wholeCellTarget(const ErrorBudget& budget, ErrorMode mode) {
     if (mode != ErrorMode::Guaranteed) return budget.surface;
     return budget.surface + budget.lineApproximation + budget.lineSimplification +
-           0.5 * budget.shareGap;
+           0.5 * budget.shareGap + budget.openChords;
 }
 
 // Where a cell the boundary crosses is split along `direction`: through the boundary point
@@ -839,7 +839,7 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normals[i]) : normals[i];
         mesh.vertices[i].uv = uvOfVertex[i];
     }
-    removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap);
+    removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap + budget_.openChords);
     splitNeedles(mesh);
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);

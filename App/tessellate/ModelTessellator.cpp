@@ -304,6 +304,17 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             chordsOnSurface[f] = 1;
             faceBudgets[f] = ErrorBudget::forChordsOnSurface(options.tolerance, options.mode);
         }
+    // A face with a free edge gives surface share to its chords and to dropping the points
+    // cell sides leave on them (ErrorBudget::withFreeEdges): each segment of a free edge is an
+    // open edge of the mesh. Not a face whose cells bound all its chords: it has no trimming.
+    for (int f = 0; f < faceCount && options.freeEdgesTakeSurfaceShare; ++f) {
+        if (!failure[f].empty() || chordsOnSurface[f]) continue;
+        bool free = false;
+        for (const auto& loop : model.faces[f].loops)
+            for (const auto& curve : loop.curves)
+                free |= uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated;
+        if (free) faceBudgets[f] = faceBudgets[f].withFreeEdges(options.tolerance, options.mode);
+    }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
     // sum must hold), leaving out the use whose cells bound its chords and the faces whose
     // cells bound all their chords.

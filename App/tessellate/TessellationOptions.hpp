@@ -19,6 +19,10 @@ struct TessellationOptions {
     // there (FaceTessellator). The display's levels keep the plain halving, on which their
     // normal bound near sloppy poles was checked.
     bool splitThroughBoundaryPoints = true;
+    // A face with a free edge gives surface share to its chords (ErrorBudget::withFreeEdges):
+    // fewer open edges along the model's own boundary. The display tessellates each face alone,
+    // where every edge looks free and none is an open edge anyone counts: it keeps the split.
+    bool freeEdgesTakeSurfaceShare = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;

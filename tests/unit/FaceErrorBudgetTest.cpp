@@ -60,6 +60,35 @@ TEST(FaceErrorBudget, PlaneTakesTheSurfaceShareForItsCurves) {
                      fixed.trimming());
 }
 
+// A face with a free edge moves surface share to its chords and to dropping the points cell
+// sides leave on them; the sum stays, and the surface keeps half the fixed split's share.
+TEST(FaceErrorBudget, FaceWithAFreeEdgeGivesSurfaceShareToItsChords) {
+    const double t = 0.01;
+    const ErrorBudget fixed = ErrorBudget::of(t, ErrorMode::Guaranteed);
+    const ErrorBudget free = fixed.withFreeEdges(t, ErrorMode::Guaranteed);
+    auto sum = [](const ErrorBudget& b) {
+        return b.surface + b.trimming() + 0.5 * b.shareGap + b.openChords;
+    };
+    EXPECT_NEAR(sum(free), sum(fixed), 1e-15);
+    EXPECT_NEAR(free.trimming(), 0.45 * t, 1e-15);
+    EXPECT_NEAR(free.openChords, 0.05 * t, 1e-15);
+    EXPECT_GE(free.surface, 0.5 * fixed.surface);
+    EXPECT_DOUBLE_EQ(free.lineApproximation, 3 * free.lineSimplification);  // gamma = 3/4
+    // a face already at the surface floor (a widened share gap took the rest) gives nothing
+    const ErrorBudget sloppy = fixed.withShareGap(fixed.largestShareGap(t, ErrorMode::Guaranteed),
+                                                  t, ErrorMode::Guaranteed);
+    const ErrorBudget sloppyFree = sloppy.withFreeEdges(t, ErrorMode::Guaranteed);
+    EXPECT_DOUBLE_EQ(sloppyFree.surface, sloppy.surface);
+    EXPECT_DOUBLE_EQ(sloppyFree.openChords, 0.0);
+    // a plane's chords already have more than that: only the removal gets a share, if any
+    const ErrorBudget plane = ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.0);
+    EXPECT_DOUBLE_EQ(plane.withFreeEdges(t, ErrorMode::Guaranteed).trimming(), plane.trimming());
+    // the approximate mode promises nothing and keeps its split
+    const ErrorBudget approximate = ErrorBudget::of(t, ErrorMode::Approximate);
+    EXPECT_DOUBLE_EQ(approximate.withFreeEdges(t, ErrorMode::Approximate).surface,
+                     approximate.surface);
+}
+
 TEST(FaceErrorBudget, SurfaceNeedOfPlaneAndSphere) {
     const double cap = 0.6 * 0.01;
     const Model plane = occ::importModel(disc(5.0));
