@@ -54,6 +54,19 @@ std::optional<std::vector<std::uint32_t>> ringAround(std::uint32_t v,
     return ring;
 }
 
+// A closed axis-aligned box: two segments whose boxes do not meet cannot cross.
+struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box& other) const {
+        return x0 <= other.x1 && other.x0 <= x1 && y0 <= other.y1 && other.y0 <= y1;
+    }
+};
+
+Box boxOf(const Point2& a, const Point2& b) {
+    return {std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()),
+            std::max(a.y(), b.y())};
+}
+
 // Proper crossing of segments ab and cd in the plane (touching at an end does not count).
 bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
     const double c1 = cross(a, b, c), c2 = cross(a, b, d), c3 = cross(c, d, a), c4 = cross(c, d, b);
@@ -167,6 +180,27 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
                     {a, b, planar(a), planar(b), normal.dot(position(a)), normal.dot(position(b))});
         }
 
+    // The inner edges by their ends on the ring (the others end at dropped points). In the
+    // plane the old triangles tile the polygon ring + chord once, and a diagonal (i, j) that a
+    // valid triangulation uses lies inside it (its triangles all face the normal and tile the
+    // polygon too), so the inner edges it crosses are those from a ring point between i and j
+    // to a dropped point or to a ring point beyond i .. j: only they are visited. A diagonal
+    // outside the polygon, which no valid triangulation uses, may be under-counted.
+    std::vector<int> ringIndex(inner.size() * 2, -1);
+    std::vector<std::vector<std::size_t>> innerAt(size);
+    for (std::size_t e = 0; e < inner.size(); ++e)
+        for (int end = 0; end < 2; ++end) {
+            const std::uint32_t vertex = end == 0 ? inner[e].a : inner[e].b;
+            const auto at = std::find(ring.begin(), ring.end(), vertex);
+            if (at == ring.end()) continue;
+            ringIndex[2 * e + end] = static_cast<int>(at - ring.begin());
+            innerAt[static_cast<std::size_t>(at - ring.begin())].push_back(e);
+        }
+
+    // the ring's sides' boxes in (u, v), to pass over the sides far from a diagonal
+    std::vector<Box> sideBoxes(m);
+    for (std::size_t k = 0; k < m; ++k) sideBoxes[k] = boxOf(uv(k), uv(k + 1));
+
     // the largest height difference along the diagonal (i, j), infinite where it may not be made
     std::vector<std::vector<double>> diagonal(size, std::vector<double>(size, kNever));
     for (std::size_t i = 0; i < size; ++i)
@@ -175,30 +209,37 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             if (forbidden[i * size + j]) continue;
             double largest = 0;
             const Point2 d2 = ringPlanar[j] - ringPlanar[i];
-            for (const PlanarEdge& edge : inner) {
-                if (edge.a == ring[i] || edge.a == ring[j] || edge.b == ring[i] ||
-                    edge.b == ring[j])
-                    continue;  // meets the diagonal at a ring point: no difference
-                // from + s (to - from) = n_i + r (n_j - n_i) in the plane
-                const Point2 d1 = edge.to - edge.from;
-                const Point2 w = ringPlanar[i] - edge.from;
-                const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
-                if (determinant == 0) continue;
-                const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
-                const double r = (w.x() * d1.y() - w.y() * d1.x()) / determinant;
-                if (s < 0 || s > 1 || r < 0 || r > 1) continue;
-                const double was = edge.fromHeight + s * (edge.toHeight - edge.fromHeight);
-                const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
-                largest = std::max(largest, std::abs(was - now));
-                if (largest > limit) break;
-            }
+            for (std::size_t k = i + 1; k < j && !(largest > limit); ++k)
+                for (const std::size_t e : innerAt[k]) {
+                    const PlanarEdge& edge = inner[e];
+                    const int other = ringIndex[2 * e] == static_cast<int>(k) ? ringIndex[2 * e + 1]
+                                                                              : ringIndex[2 * e];
+                    // an edge between two ring points on one side, or one meeting the diagonal
+                    // at its ends, crosses nothing (the latter made no difference before either)
+                    if (other >= static_cast<int>(i) && other <= static_cast<int>(j)) continue;
+                    // from + s (to - from) = n_i + r (n_j - n_i) in the plane
+                    const Point2 d1 = edge.to - edge.from;
+                    const Point2 w = ringPlanar[i] - edge.from;
+                    const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
+                    if (determinant == 0) continue;
+                    const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
+                    const double r = (w.x() * d1.y() - w.y() * d1.x()) / determinant;
+                    if (s < 0 || s > 1 || r < 0 || r > 1) continue;
+                    const double was = edge.fromHeight + s * (edge.toHeight - edge.fromHeight);
+                    const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
+                    largest = std::max(largest, std::abs(was - now));
+                    if (largest > limit) break;
+                }
             // A diagonal that alone changes the surface by more than the limit is in no
             // triangulation the caller could take: the search leaves it out (its cost stays
             // infinite) without testing its crossings.
             if (largest > limit) continue;
+            // only a side whose box meets the diagonal's can cross it
+            const Box diagonalBox = boxOf(uv(i), uv(j));
             bool crosses = false;
             for (std::size_t k = 0; k < m && !crosses; ++k)
-                crosses = segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
+                crosses = sideBoxes[k].meets(diagonalBox) &&
+                          segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
             if (crosses) continue;
             diagonal[i][j] = largest;
         }
