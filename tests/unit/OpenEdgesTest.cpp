@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "WeldedOpenEdges.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
@@ -28,28 +29,12 @@ namespace {
 
 const std::filesystem::path kCorpus = NURBSLOD_CORPUS_DIR;
 
-// meshjudge's count: positions welded on a grid of max(tolerance 1e-3, 1e-9) (numpy rounds half
-// to even, as nearbyint does), then the edges that one triangle uses.
+// meshjudge's count: every open edge of the welded mesh (WeldedOpenEdges.hpp).
 std::size_t openEdges(const std::vector<Point3>& positions,
                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
                       double tolerance) {
-    const double quantum = std::max(tolerance * 1e-3, 1e-9);
-    std::map<std::array<std::int64_t, 3>, std::uint32_t> cellIds;
-    std::vector<std::uint32_t> welded(positions.size());
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        std::array<std::int64_t, 3> key;
-        for (int axis = 0; axis < 3; ++axis)
-            key[axis] = static_cast<std::int64_t>(std::nearbyint(positions[i][axis] / quantum));
-        welded[i] = cellIds.emplace(key, static_cast<std::uint32_t>(cellIds.size())).first->second;
-    }
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-    for (const auto& t : triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = welded[t[k]], b = welded[t[(k + 1) % 3]];
-            if (a != b) ++uses[{std::min(a, b), std::max(a, b)}];
-        }
-    return static_cast<std::size_t>(
-        std::count_if(uses.begin(), uses.end(), [](const auto& use) { return use.second == 1; }));
+    return static_cast<std::size_t>(test::weldedOpenEdgesWhere(positions, triangles, tolerance,
+                                                               [](const Point3&) { return true; }));
 }
 
 // BRepMesh_IncrementalMesh at deflection D, 0.5 rad (as tests/bench/model_benchmark.py runs it).
