@@ -469,6 +469,13 @@ Model importModel(const TopoDS_Shape& original) {
     const double pcurveAccuracy = kPcurveAccuracy * model.boundingBoxDiagonal;
 
     model.faces.resize(originalFaces.Extent());
+    // a face whose import failed keeps its slot (1-based index k) with the reason
+    auto failedFace = [](int k, const Standard_Failure& failure) {
+        TrimmedSurface face;
+        face.faceIndex = k;
+        face.error = std::string("import failed: ") + failure.GetMessageString();
+        return face;
+    };
     std::vector<int> toConvert;  // 0-based face slots left for NurbsConvert
     for (int k = 1; k <= originalFaces.Extent(); ++k) {
         const SurfaceConversion conversion = conversionOf(sewn.faces[k - 1]);
@@ -484,9 +491,7 @@ Model importModel(const TopoDS_Shape& original) {
                 toConvert.push_back(k - 1);
                 continue;
             }
-            model.faces[k - 1] = TrimmedSurface{};
-            model.faces[k - 1].faceIndex = k;
-            model.faces[k - 1].error = std::string("import failed: ") + failure.GetMessageString();
+            model.faces[k - 1] = failedFace(k, failure);
         }
     }
 
@@ -528,9 +533,7 @@ Model importModel(const TopoDS_Shape& original) {
             face.Orientation(originalFace.Orientation());
             model.faces[slot] = importFace(face, k, edgeIndex, pcurveAccuracy, false);
         } catch (const Standard_Failure& failure) {
-            model.faces[slot] = TrimmedSurface{};
-            model.faces[slot].faceIndex = k;
-            model.faces[slot].error = std::string("import failed: ") + failure.GetMessageString();
+            model.faces[slot] = failedFace(k, failure);
         }
     }
     for (auto& face : model.faces)

@@ -380,6 +380,22 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
         return ring;
     };
 
+    // Adds to `points` (consecutive on one chord) the chord's points beyond its first one
+    // (towardFront, starting at `next`) or beyond its last: each one's ring holds the point
+    // before it as its neighbour on that side.
+    auto extendAlongChord = [&](std::vector<std::uint32_t>& points, std::uint32_t next,
+                                bool towardFront) {
+        for (std::uint32_t previous = towardFront ? points.front() : points.back();
+             points.size() < vertexCount;) {
+            const auto nextRing = chordRing(next);
+            if (!nextRing || (towardFront ? nextRing->back() : nextRing->front()) != previous)
+                break;
+            points.insert(towardFront ? points.begin() : points.end(), next);
+            previous = next;
+            next = towardFront ? nextRing->front() : nextRing->back();
+        }
+    };
+
     // drops `points` (consecutive on one chord, the first next to the ring's first point) when
     // their disk's re-triangulation is within the allowance
     auto drop = [&](const std::vector<std::uint32_t>& points, std::size_t largestRing) {
@@ -436,20 +452,8 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
             // every such point of v's chord at once: dropped one by one, each one's new
             // triangles join the next one's fan, whose ring grows with every point
             std::vector<std::uint32_t> points{v};
-            for (std::uint32_t previous = v, next = ring->front(); points.size() < vertexCount;) {
-                const auto nextRing = chordRing(next);
-                if (!nextRing || nextRing->back() != previous) break;
-                points.insert(points.begin(), next);
-                previous = next;
-                next = nextRing->front();
-            }
-            for (std::uint32_t previous = v, next = ring->back(); points.size() < vertexCount;) {
-                const auto nextRing = chordRing(next);
-                if (!nextRing || nextRing->front() != previous) break;
-                points.push_back(next);
-                previous = next;
-                next = nextRing->back();
-            }
+            extendAlongChord(points, ring->front(), true);
+            extendAlongChord(points, ring->back(), false);
             for (std::uint32_t p : points) chordTried[p] = 1;
             if (points.size() > 1) {
                 const std::uint32_t first = chordRing(points.front())->front();
