@@ -55,4 +55,45 @@ Point3 BezierPatch::point(double s, double t) const {
     return projectHomogeneous(column[degreeU_]);
 }
 
+namespace {
+
+// Bernstein polynomials B_{k,degree}(s), k = 0..degree, by the recurrence
+// B_{k,d} = (1 - s) B_{k,d-1} + s B_{k-1,d-1}: sums of non-negative terms, no cancellation.
+void bernstein(int degree, double s, double* values) {
+    values[0] = 1.0;
+    for (int d = 1; d <= degree; ++d) {
+        values[d] = s * values[d - 1];
+        for (int k = d - 1; k >= 1; --k) values[k] = (1 - s) * values[k] + s * values[k - 1];
+        values[0] *= (1 - s);
+    }
+}
+
+}  // namespace
+
+std::vector<Point3> BezierPatch::gridPoints(int segmentsU, int segmentsV) const {
+    const int m = degreeU_, n = degreeV_;
+    std::vector<double> basisV(static_cast<size_t>((segmentsV + 1) * (n + 1)));
+    for (int j = 0; j <= segmentsV; ++j)
+        bernstein(n, segmentsV > 0 ? static_cast<double>(j) / segmentsV : 0.0,
+                  &basisV[j * (n + 1)]);
+    // rows[j * (m + 1) + i] = sum over l of B_l(t_j) P_il: the patch's u-curve at t_j
+    std::vector<HomogeneousPoint3> rows(static_cast<size_t>((segmentsV + 1) * (m + 1)),
+                                        HomogeneousPoint3::Zero());
+    for (int j = 0; j <= segmentsV; ++j)
+        for (int i = 0; i <= m; ++i)
+            for (int l = 0; l <= n; ++l)
+                rows[j * (m + 1) + i] += basisV[j * (n + 1) + l] * pole(i, l);
+    std::vector<Point3> points(static_cast<size_t>((segmentsU + 1) * (segmentsV + 1)));
+    std::vector<double> basisU(static_cast<size_t>(m + 1));
+    for (int i = 0; i <= segmentsU; ++i) {
+        bernstein(m, segmentsU > 0 ? static_cast<double>(i) / segmentsU : 0.0, basisU.data());
+        for (int j = 0; j <= segmentsV; ++j) {
+            HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
+            for (int k = 0; k <= m; ++k) sum += basisU[k] * rows[j * (m + 1) + k];
+            points[i * (segmentsV + 1) + j] = projectHomogeneous(sum);
+        }
+    }
+    return points;
+}
+
 }  // namespace nurbslod

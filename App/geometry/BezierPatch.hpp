@@ -26,6 +26,13 @@ public:
     // Point at local parameters (s, t), by de Casteljau.
     Point3 point(double s, double t) const;
 
+    // Points at the local parameters (i / segmentsU, j / segmentsV), i = 0..segmentsU,
+    // j = 0..segmentsV, at index i * (segmentsV + 1) + j. One Bernstein row per parameter and a
+    // sum over v shared by every u (tensor product): a grid of k^2 points costs about
+    // k^2 (degreeU + 1) + k (degreeU + 1)(degreeV + 1) products instead of de Casteljau's
+    // k^2 (degreeU + 1) degreeV^2 / 2 per point.
+    std::vector<Point3> gridPoints(int segmentsU, int segmentsV) const;
+
 private:
     int degreeU_ = 0, degreeV_ = 0;
     std::vector<HomogeneousPoint3> poles_;

@@ -127,13 +127,16 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
 
     // Points standing for the surface: control points (conservative) or surface points at the
     // control points' parameters (approximate).
+    // The approximate measure also samples between those parameters (below): one grid of
+    // (2m + 1) x (2n + 1) surface points holds both.
+    std::vector<Point3> samples;
+    if (mode == ErrorMode::Approximate) samples = patch.gridPoints(2 * m, 2 * n);
     std::vector<Point3> net(static_cast<size_t>((m + 1) * (n + 1)));
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j)
-            net[i * (n + 1) + j] =
-                mode == ErrorMode::Guaranteed
-                    ? patch.pole3(i, j)
-                    : patch.point(static_cast<double>(i) / m, static_cast<double>(j) / n);
+            net[i * (n + 1) + j] = mode == ErrorMode::Guaranteed
+                                       ? patch.pole3(i, j)
+                                       : samples[(2 * i) * (2 * n + 1) + 2 * j];
 
     // the net point farthest from the bilinear patch decides where to split
     double farthest = -1;
@@ -156,7 +159,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                 if (i % 2 == 0 && j % 2 == 0) continue;  // a control point's parameter: done
                 const double s = static_cast<double>(i) / (2 * m);
                 const double t = static_cast<double>(j) / (2 * n);
-                between = std::max(between, (patch.point(s, t) - bilinear(s, t)).norm());
+                between = std::max(between, (samples[i * (2 * n + 1) + j] - bilinear(s, t)).norm());
             }
         bound.interior = std::max(farthest, between);
         bound.boundary = 0;  // the approximate measure samples the edges with the interior

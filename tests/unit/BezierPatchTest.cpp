@@ -1,0 +1,53 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "geometry/BezierPatch.hpp"
+
+namespace nurbslod {
+namespace {
+
+// A rational patch with control points in the unit cube and weights from 0.2 to 5.
+BezierPatch randomRationalPatch(std::mt19937& random, int degreeU, int degreeV) {
+    std::uniform_real_distribution<double> coordinate(-1, 1), weight(0.2, 5.0);
+    BezierPatch patch(degreeU, degreeV);
+    for (int i = 0; i <= degreeU; ++i)
+        for (int j = 0; j <= degreeV; ++j) {
+            const double w = weight(random);
+            patch.pole(i, j) = HomogeneousPoint3(w * coordinate(random), w * coordinate(random),
+                                                 w * coordinate(random), w);
+        }
+    return patch;
+}
+
+// The Bernstein grid (used by the approximate error measure) gives the points de Casteljau
+// gives, at every grid parameter, for every degree pair the corpus has and beyond.
+TEST(BezierPatch, GridPointsAreDeCasteljauPoints) {
+    std::mt19937 random(7);
+    for (int degreeU = 1; degreeU <= 11; degreeU += 2)
+        for (int degreeV = 1; degreeV <= 9; degreeV += 4) {
+            const BezierPatch patch = randomRationalPatch(random, degreeU, degreeV);
+            const int segmentsU = 2 * degreeU, segmentsV = 2 * degreeV + 1;
+            const std::vector<Point3> grid = patch.gridPoints(segmentsU, segmentsV);
+            ASSERT_EQ(grid.size(), static_cast<size_t>((segmentsU + 1) * (segmentsV + 1)));
+            for (int i = 0; i <= segmentsU; ++i)
+                for (int j = 0; j <= segmentsV; ++j) {
+                    const Point3 expected = patch.point(static_cast<double>(i) / segmentsU,
+                                                        static_cast<double>(j) / segmentsV);
+                    EXPECT_LT((grid[i * (segmentsV + 1) + j] - expected).norm(), 1e-12)
+                        << "degrees " << degreeU << " x " << degreeV << " at " << i << ", " << j;
+                }
+        }
+}
+
+// A grid of one parameter per direction is the corner (0, 0).
+TEST(BezierPatch, GridOfNoSegmentsIsTheFirstCorner) {
+    std::mt19937 random(3);
+    const BezierPatch patch = randomRationalPatch(random, 3, 2);
+    const std::vector<Point3> grid = patch.gridPoints(0, 0);
+    ASSERT_EQ(grid.size(), 1u);
+    EXPECT_LT((grid[0] - patch.pole3(0, 0)).norm(), 1e-15);
+}
+
+}  // namespace
+}  // namespace nurbslod
