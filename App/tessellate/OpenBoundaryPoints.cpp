@@ -196,10 +196,46 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             ringIndex[2 * e + end] = static_cast<int>(at - ring.begin());
             innerAt[static_cast<std::size_t>(at - ring.begin())].push_back(e);
         }
+    // the same, laid out by ring point in one array (read for every diagonal over it), each with
+    // the ring index of its other end (-1: a dropped point)
+    struct EdgeFromRing {
+        Point2 from, direction;
+        double fromHeight, heightChange;
+        int other;
+    };
+    std::vector<EdgeFromRing> fromRing;
+    std::vector<std::size_t> fromRingStart(size + 1, 0);
+    for (std::size_t k = 0; k < size; ++k) {
+        fromRingStart[k] = fromRing.size();
+        for (const std::size_t e : innerAt[k]) {
+            const PlanarEdge& edge = inner[e];
+            const int other =
+                ringIndex[2 * e] == static_cast<int>(k) ? ringIndex[2 * e + 1] : ringIndex[2 * e];
+            fromRing.push_back({edge.from, edge.to - edge.from, edge.fromHeight,
+                                edge.toHeight - edge.fromHeight, other});
+        }
+    }
+    fromRingStart[size] = fromRing.size();
 
-    // the ring's sides' boxes in (u, v), to pass over the sides far from a diagonal
-    std::vector<Box> sideBoxes(m);
-    for (std::size_t k = 0; k < m; ++k) sideBoxes[k] = boxOf(uv(k), uv(k + 1));
+    // The ring's sides that a diagonal could cross in (u, v), with their boxes to pass over
+    // those far from it. A side with every ring point on one side of its line (or on it) is
+    // crossed by no diagonal: segmentsCross needs the diagonal's ends strictly on both sides,
+    // and measures them with the same cross products. On the strips along a free edge the
+    // ring is all but convex and few sides are left (wing.brep: none): the test per diagonal
+    // was a third of the search.
+    std::vector<std::size_t> crossable;
+    std::vector<Box> sideBoxes;
+    for (std::size_t k = 0; k < m; ++k) {
+        bool left = false, right = false;
+        for (std::size_t w = 0; w < size && !(left && right); ++w) {
+            const double side = cross(uv(k), uv(k + 1), uv(w));
+            left |= side > 0;
+            right |= side < 0;
+        }
+        if (!(left && right)) continue;
+        crossable.push_back(k);
+        sideBoxes.push_back(boxOf(uv(k), uv(k + 1)));
+    }
 
     // the largest height difference along the diagonal (i, j), infinite where it may not be made
     std::vector<std::vector<double>> diagonal(size, std::vector<double>(size, kNever));
@@ -210,22 +246,21 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             double largest = 0;
             const Point2 d2 = ringPlanar[j] - ringPlanar[i];
             for (std::size_t k = i + 1; k < j && !(largest > limit); ++k)
-                for (const std::size_t e : innerAt[k]) {
-                    const PlanarEdge& edge = inner[e];
-                    const int other = ringIndex[2 * e] == static_cast<int>(k) ? ringIndex[2 * e + 1]
-                                                                              : ringIndex[2 * e];
+                for (std::size_t at = fromRingStart[k]; at < fromRingStart[k + 1]; ++at) {
+                    const EdgeFromRing& edge = fromRing[at];
                     // an edge between two ring points on one side, or one meeting the diagonal
                     // at its ends, crosses nothing (the latter made no difference before either)
-                    if (other >= static_cast<int>(i) && other <= static_cast<int>(j)) continue;
-                    // from + s (to - from) = n_i + r (n_j - n_i) in the plane
-                    const Point2 d1 = edge.to - edge.from;
+                    if (edge.other >= static_cast<int>(i) && edge.other <= static_cast<int>(j))
+                        continue;
+                    // from + s direction = n_i + r (n_j - n_i) in the plane
+                    const Point2& d1 = edge.direction;
                     const Point2 w = ringPlanar[i] - edge.from;
                     const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
                     if (determinant == 0) continue;
                     const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
                     const double r = (w.x() * d1.y() - w.y() * d1.x()) / determinant;
                     if (s < 0 || s > 1 || r < 0 || r > 1) continue;
-                    const double was = edge.fromHeight + s * (edge.toHeight - edge.fromHeight);
+                    const double was = edge.fromHeight + s * edge.heightChange;
                     const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
                     largest = std::max(largest, std::abs(was - now));
                     if (largest > limit) break;
@@ -237,15 +272,18 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             // only a side whose box meets the diagonal's can cross it
             const Box diagonalBox = boxOf(uv(i), uv(j));
             bool crosses = false;
-            for (std::size_t k = 0; k < m && !crosses; ++k)
-                crosses = sideBoxes[k].meets(diagonalBox) &&
+            for (std::size_t c = 0; c < crossable.size() && !crosses; ++c) {
+                const std::size_t k = crossable[c];
+                crosses = sideBoxes[c].meets(diagonalBox) &&
                           segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
+            }
             if (crosses) continue;
-            diagonal[i][j] = largest;
+            diagonal[i][j] = diagonal[j][i] = largest;
         }
-    auto sideCost = [&](std::size_t i, std::size_t j) {
-        return (j == i + 1 || (i == 0 && j == m)) ? 0.0 : diagonal[i][j];
-    };
+    // sides (consecutive points and the chord) cost nothing; diagonal is symmetric, so that the
+    // search below reads (k, j) as the row j, in order
+    for (std::size_t i = 0; i < m; ++i) diagonal[i][i + 1] = diagonal[i + 1][i] = 0.0;
+    diagonal[0][m] = diagonal[m][0] = 0.0;
     auto triangleValid = [&](std::size_t i, std::size_t k, std::size_t j) {
         if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return false;
         for (std::size_t w = 0; w < size; ++w) {
@@ -257,19 +295,27 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         }
         return facesNormal(ring[i], ring[k], ring[j]);
     };
-    // cost[i][j]: the least largest difference over triangulations of the sub-polygon i .. j
+    // cost[i][j]: the least largest difference over triangulations of the sub-polygon i .. j,
+    // kept in both halves (cost[j][i] too) so that the search reads rows only
     std::vector<std::vector<double>> cost(size, std::vector<double>(size, 0.0));
     std::vector<std::vector<std::size_t>> split(size, std::vector<std::size_t>(size, 0));
     for (std::size_t length = 2; length <= m; ++length)
         for (std::size_t i = 0; i + length <= m; ++i) {
             const std::size_t j = i + length;
-            cost[i][j] = kNever;
-            if (sideCost(i, j) == kNever) continue;
-            for (std::size_t k = i + 1; k < j; ++k) {
-                const double c = std::max(
-                    {cost[i][k], cost[k][j], sideCost(i, k), sideCost(k, j), sideCost(i, j)});
-                if (c < cost[i][j] && triangleValid(i, k, j)) cost[i][j] = c, split[i][j] = k;
+            double best = kNever;
+            const double outer = diagonal[i][j];
+            if (outer != kNever) {
+                const std::vector<double>& fromI = cost[i];
+                const std::vector<double>& toJ = cost[j];
+                const std::vector<double>& diagonalsOfI = diagonal[i];
+                const std::vector<double>& diagonalsOfJ = diagonal[j];
+                for (std::size_t k = i + 1; k < j; ++k) {
+                    const double c =
+                        std::max({fromI[k], toJ[k], diagonalsOfI[k], diagonalsOfJ[k], outer});
+                    if (c < best && triangleValid(i, k, j)) best = c, split[i][j] = k;
+                }
             }
+            cost[i][j] = cost[j][i] = best;
         }
     if (cost[0][m] == kNever) return std::nullopt;
     std::vector<Triangle> triangles;
