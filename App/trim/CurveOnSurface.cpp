@@ -58,11 +58,16 @@ Point3 bezierPoint(const std::vector<Point3>& control, double t) {
 }  // namespace
 
 ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
-    const int n = std::clamp(curve.bezierDegree(), 1, kMaxChordDegree);
+    CurvePoints points(curve);
+    return chordBound(points, s0, s1);
+}
+
+ChordBound chordBound(CurvePoints& curve, double s0, double s1) {
+    const int n = std::clamp(curve.curve().bezierDegree(), 1, kMaxChordDegree);
     const Eigen::MatrixXd& inverse = interpolationMatrix(n);
     Eigen::MatrixXd samples(n + 1, 3);
     for (int i = 0; i <= n; ++i) {
-        const Point3 p = curve.point(s0 + (s1 - s0) * i / n);
+        const Point3 p = curve(s0 + (s1 - s0) * i / n);
         samples.row(i) = p.transpose();
     }
     const Eigen::MatrixXd controlMatrix = inverse * samples;
@@ -75,7 +80,7 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
     ChordBound result;
     for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
-        const Point3 exact = curve.point(s0 + (s1 - s0) * t);
+        const Point3 exact = curve(s0 + (s1 - s0) * t);
         result.residual = std::max(result.residual, (exact - bezierPoint(control, t)).norm());
     }
     // The control net of the whole piece stands up to about twice as far from the chord as the

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <unordered_map>
+
 #include "geometry/BSplineCurve2d.hpp"
 #include "geometry/BSplineSurface.hpp"
 
@@ -48,5 +50,25 @@ struct ChordBound {
     double residual = 0;  // interpolation residual at the sample midpoints
 };
 ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1);
+
+// A curve's points by parameter, each evaluated once. Midpoint subdivision asks chordBound for
+// a piece's samples at s0 + (s1 - s0) i / n and midway between them; a half's samples are the
+// same numbers (the pieces' lengths are powers of two), so each half evaluates only its own
+// midpoints.
+class CurvePoints {
+public:
+    explicit CurvePoints(const CurveOnSurface& curve) : curve_(&curve) {}
+    const CurveOnSurface& curve() const { return *curve_; }
+    Point3 operator()(double s) {
+        const auto [at, added] = points_.try_emplace(s);
+        if (added) at->second = curve_->point(s);
+        return at->second;
+    }
+
+private:
+    const CurveOnSurface* curve_;
+    std::unordered_map<double, Point3> points_;
+};
+ChordBound chordBound(CurvePoints& points, double s0, double s1);
 
 }  // namespace nurbslod

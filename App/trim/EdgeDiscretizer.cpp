@@ -15,8 +15,8 @@ namespace {
 constexpr int kMaxDepth = 24;
 constexpr size_t kMaxPoints = 4096;
 
-bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, double eps) {
-    for (const auto& use : uses) {
+bool flatEnough(std::vector<CurvePoints>& uses, double s0, double s1, double eps) {
+    for (auto& use : uses) {
         const ChordBound b = chordBound(use, s0, s1);
         // a large residual means the interpolant does not yet represent the piece: its hull
         // bound would not be trustworthy, so subdivide
@@ -25,10 +25,17 @@ bool flatEnough(const std::vector<CurveOnSurface>& uses, double s0, double s1, d
     return true;
 }
 
+std::vector<CurvePoints> pointsOf(const std::vector<CurveOnSurface>& uses) {
+    std::vector<CurvePoints> points;
+    for (const auto& use : uses) points.emplace_back(use);
+    return points;
+}
+
 }  // namespace
 
 std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurface>& uses,
                                                   double approximation, double simplification) {
+    std::vector<CurvePoints> curves = pointsOf(uses);
     const double bound = approximation + std::max(0.0, simplification);
     const double shortest = std::ldexp(1.0, -kMaxDepth);
     std::vector<double> params{0.0};
@@ -37,7 +44,7 @@ std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurfa
         const double left = 1 - start;
         auto flat = [&](double length) {
             return length <= shortest || params.size() >= kMaxPoints ||
-                   flatEnough(uses, start, length >= left ? 1.0 : start + length, bound);
+                   flatEnough(curves, start, length >= left ? 1.0 : start + length, bound);
         };
         double good = 0, bad = 0;  // a length that is flat, and one that is not (0: none known)
         double trial = std::min(step, left);
@@ -72,6 +79,7 @@ std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurfa
 
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
                                    double simplification) {
+    std::vector<CurvePoints> curves = pointsOf(uses);
     std::vector<double> params{0.0};
     // depth-first over [s0, s1] so that the parameters come out in increasing order
     std::vector<std::pair<std::pair<double, double>, int>> stack{{{0.0, 1.0}, 0}};
@@ -80,7 +88,7 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
         stack.pop_back();
         auto [s0, s1] = interval;
         if (depth < kMaxDepth && params.size() + stack.size() < kMaxPoints &&
-            !flatEnough(uses, s0, s1, approximation)) {
+            !flatEnough(curves, s0, s1, approximation)) {
             const double mid = 0.5 * (s0 + s1);
             stack.push_back({{mid, s1}, depth + 1});
             stack.push_back({{s0, mid}, depth + 1});
@@ -94,7 +102,7 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
     // face's polyline stays within `simplification` of the simplified one.
     std::vector<std::vector<Point3>> points(uses.size());
     for (size_t k = 0; k < uses.size(); ++k)
-        for (double s : params) points[k].push_back(uses[k].point(s));
+        for (double s : params) points[k].push_back(curves[k](s));
     std::vector<char> keep(params.size(), 0);
     keep.front() = keep.back() = 1;
     std::vector<std::pair<size_t, size_t>> ranges{{0, params.size() - 1}};
