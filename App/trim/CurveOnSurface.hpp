@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <unordered_map>
 
 #include "geometry/BSplineCurve2d.hpp"
@@ -57,16 +58,22 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1);
 // midpoints.
 class CurvePoints {
 public:
-    explicit CurvePoints(const CurveOnSurface& curve) : curve_(&curve) {}
+    // `evaluations`, where given, counts the points evaluated (for tests)
+    explicit CurvePoints(const CurveOnSurface& curve, std::size_t* evaluations = nullptr)
+        : curve_(&curve), evaluations_(evaluations) {}
     const CurveOnSurface& curve() const { return *curve_; }
     Point3 operator()(double s) {
         const auto [at, added] = points_.try_emplace(s);
-        if (added) at->second = curve_->point(s);
+        if (added) {
+            at->second = curve_->point(s);
+            if (evaluations_) ++*evaluations_;
+        }
         return at->second;
     }
 
 private:
     const CurveOnSurface* curve_;
+    std::size_t* evaluations_;
     std::unordered_map<double, Point3> points_;
 };
 ChordBound chordBound(CurvePoints& points, double s0, double s1);
