@@ -336,13 +336,16 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 // A piece with less area than the grown cell does not cover it; only one with
                 // (about) all of it needs the exact test (the rounding of doubles at 2^60).
                 double area = 0;
-                for (const auto& p : piece) area += ClipperLib::Area(p);
+                bool any = false;
+                for (const auto& p : piece) {
+                    const double pathArea = ClipperLib::Area(p);
+                    area += pathArea;
+                    any |= pathArea != 0;
+                }
                 const double grownArea = double(grown.x1 - grown.x0) * double(grown.y1 - grown.y0);
                 covered =
                     std::abs(area) >= (1 - 1e-9) * grownArea && coversWithMargin(*node.region, r);
                 if (!covered) {
-                    bool any = false;
-                    for (const auto& p : piece) any |= ClipperLib::Area(p) != 0;
                     if (!any) continue;  // outside the trimmed region: neither leaf nor parent
                     node.region = std::make_shared<const Paths>(std::move(piece));
                 }

@@ -185,35 +185,33 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     // valid triangulation uses lies inside it (its triangles all face the normal and tile the
     // polygon too), so the inner edges it crosses are those from a ring point between i and j
     // to a dropped point or to a ring point beyond i .. j: only they are visited. A diagonal
-    // outside the polygon, which no valid triangulation uses, may be under-counted.
-    std::vector<int> ringIndex(inner.size() * 2, -1);
-    std::vector<std::vector<std::size_t>> innerAt(size);
-    for (std::size_t e = 0; e < inner.size(); ++e)
-        for (int end = 0; end < 2; ++end) {
-            const std::uint32_t vertex = end == 0 ? inner[e].a : inner[e].b;
-            const auto at = std::find(ring.begin(), ring.end(), vertex);
-            if (at == ring.end()) continue;
-            ringIndex[2 * e + end] = static_cast<int>(at - ring.begin());
-            innerAt[static_cast<std::size_t>(at - ring.begin())].push_back(e);
-        }
-    // the same, laid out by ring point in one array (read for every diagonal over it), each with
-    // the ring index of its other end (-1: a dropped point)
+    // outside the polygon, which no valid triangulation uses, may be under-counted. They are
+    // laid out by ring point in one array (read for every diagonal over it), each with the ring
+    // index of its other end (-1: a dropped point); an edge between two ring points is listed
+    // at both.
     struct EdgeFromRing {
         Point2 from, direction;
         double fromHeight, heightChange;
         int other;
     };
+    auto ringIndexOf = [&](std::uint32_t vertex) {
+        const auto at = std::find(ring.begin(), ring.end(), vertex);
+        return at == ring.end() ? -1 : static_cast<int>(at - ring.begin());
+    };
+    std::vector<std::vector<EdgeFromRing>> byRingPoint(size);
+    for (const PlanarEdge& edge : inner) {
+        const int a = ringIndexOf(edge.a), b = ringIndexOf(edge.b);
+        EdgeFromRing laidOut{edge.from, edge.to - edge.from, edge.fromHeight,
+                             edge.toHeight - edge.fromHeight, b};
+        if (a >= 0) byRingPoint[a].push_back(laidOut);
+        laidOut.other = a;
+        if (b >= 0) byRingPoint[b].push_back(laidOut);
+    }
     std::vector<EdgeFromRing> fromRing;
     std::vector<std::size_t> fromRingStart(size + 1, 0);
     for (std::size_t k = 0; k < size; ++k) {
         fromRingStart[k] = fromRing.size();
-        for (const std::size_t e : innerAt[k]) {
-            const PlanarEdge& edge = inner[e];
-            const int other =
-                ringIndex[2 * e] == static_cast<int>(k) ? ringIndex[2 * e + 1] : ringIndex[2 * e];
-            fromRing.push_back({edge.from, edge.to - edge.from, edge.fromHeight,
-                                edge.toHeight - edge.fromHeight, other});
-        }
+        fromRing.insert(fromRing.end(), byRingPoint[k].begin(), byRingPoint[k].end());
     }
     fromRingStart[size] = fromRing.size();
 

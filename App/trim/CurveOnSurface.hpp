@@ -53,9 +53,10 @@ struct ChordBound {
 ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1);
 
 // A curve's points by parameter, each evaluated once. Midpoint subdivision asks chordBound for
-// a piece's samples at s0 + (s1 - s0) i / n and midway between them; a half's samples are the
-// same numbers (the pieces' lengths are powers of two), so each half evaluates only its own
-// midpoints.
+// a piece's samples at s0 + (s1 - s0) i / n and midway between them; a half's samples are its
+// parent's samples and midpoints. For the left half they are the same numbers (same start,
+// lengths powers of two), so it evaluates only its own midpoints; the right half's are
+// rounded from another start and hit where they come out the same.
 class CurvePoints {
 public:
     // `evaluations`, where given, counts the points evaluated (for tests)
