@@ -12,6 +12,7 @@
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
 #include "tessellate/CellTriangulation.hpp"
+#include "tessellate/KdTreeGrid.hpp"
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 #include "tessellate/RectangleInRegion.hpp"
@@ -25,9 +26,8 @@ using ClipperLib::Paths;
 
 namespace {
 
-// Integer steps across the boundary's bounding box: 2^30 keeps Clipper in its fast 64-bit
-// range, and 1e-9 of a face is far below any tolerance a user asks for.
-constexpr cInt kScale = cInt(1) << 30;
+// Integer steps across the boundary's bounding box (KdTreeGrid, which the edges align with).
+constexpr cInt kScale = kKdTreeFrameScale;
 // Deep enough for 2^-60 of a face; a face that needs more is broken, and is reported.
 constexpr int kMaxDepth = 60;
 

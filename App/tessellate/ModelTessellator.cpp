@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
+#include "tessellate/KdTreeAlignedHalving.hpp"
 #include "tessellate/SurfaceMeeting.hpp"
 #include "tessellate/SurfaceProjection.hpp"
 #include "trim/EdgeDiscretizer.hpp"
@@ -328,6 +330,29 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         edge.setTrimming(trimming);
         return edge;
     };
+    // The kd-tree lines of each face whose frame is known before its edges are discretised
+    // (KdTreeAlignedHalving). An edge halves its pieces on the lines of one face it is straight
+    // in: its curve use's if it can, another's otherwise. The points of the edge then lie where
+    // that face's kd-tree cuts, and its cells add no points between them.
+    std::vector<std::optional<std::array<KdTreeGrid, 2>>> faceGrids(faceCount);
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        if (failure[f].empty()) faceGrids[f] = kdTreeGridsBeforeDiscretisation(model.faces[f]);
+    });
+    auto onKdTreeLines = [&](size_t e, const std::vector<CurveOnSurface>& curves,
+                             const ErrorBudget& edge) -> std::optional<std::vector<double>> {
+        std::vector<size_t> order;
+        if (curveUse[e] >= 0) order.push_back(static_cast<size_t>(curveUse[e]));
+        for (size_t k = 0; k < curves.size(); ++k)
+            if (static_cast<int>(k) != curveUse[e]) order.push_back(k);
+        for (size_t k : order)
+            if (const auto& grids = faceGrids[uses[e][k].face])
+                if (auto params = discretizeEdgeOnKdTreeLines(
+                        curves, k, grids, edge.lineApproximation, edge.lineSimplification))
+                    return params;
+        if (curveUse[e] < 0) return std::nullopt;
+        return discretizeEdgeOnKdTreeLines(curves, curveUse[e], std::nullopt,
+                                           edge.lineApproximation, edge.lineSimplification);
+    };
     auto discretize = [&](size_t e, const ErrorBudget& edge) {
         std::vector<CurveOnSurface> curves;
         for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
@@ -335,10 +360,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // coincide and their triangles vanish; on a sloppy one (a "pole" row spread over the
         // edge tolerance) they follow the surface instead of collapsing onto one vertex.
         // a free edge's every segment is an open edge of the mesh: as few as the bound allows
-        return curves.size() == 1
-                   ? discretizeEdgeByLongestChords(curves, edge.lineApproximation,
-                                                   edge.lineSimplification)
-                   : discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
+        if (curves.size() == 1)
+            return discretizeEdgeByLongestChords(curves, edge.lineApproximation,
+                                                 edge.lineSimplification);
+        if (auto params = onKdTreeLines(e, curves, edge)) return *params;
+        return discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
     };
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1)

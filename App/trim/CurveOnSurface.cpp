@@ -140,4 +140,33 @@ bool CurveOnSurface::straightInParameterPlane() const {
     return true;
 }
 
+double CurveOnSurface::parameterWhere(int coordinate, double value, double s0, double s1) const {
+    double a = s0, b = s1;
+    double fa = uv(a)[coordinate] - value, fb = uv(b)[coordinate] - value;
+    if (fa == 0) return a;
+    if (fb == 0) return b;
+    if ((fa < 0) == (fb < 0)) return std::abs(fa) <= std::abs(fb) ? a : b;
+    // regula falsi with the Illinois correction: exact at once where the coordinate is linear
+    // in s (a line's pcurve), a few steps where it is rational; every 8th step bisects so that
+    // an uneven piece still shrinks
+    const double resolution = 1e-15 * (std::abs(fa) + std::abs(fb) + std::abs(value));
+    int kept = 0;  // which end the last steps kept (-1: a, 1: b)
+    for (int step = 0; step < 100 && b - a > 1e-16 * (1 + std::abs(a)); ++step) {
+        double s = step % 8 == 7 ? 0.5 * (a + b) : a - fa * (b - a) / (fb - fa);
+        if (!(s > a && s < b)) s = 0.5 * (a + b);
+        const double fs = uv(s)[coordinate] - value;
+        if (std::abs(fs) <= resolution) return s;
+        if ((fs < 0) == (fa < 0)) {
+            a = s, fa = fs;
+            if (kept == 1) fb *= 0.5;
+            kept = 1;
+        } else {
+            b = s, fb = fs;
+            if (kept == -1) fa *= 0.5;
+            kept = -1;
+        }
+    }
+    return std::abs(fa) <= std::abs(fb) ? a : b;
+}
+
 }  // namespace nurbslod

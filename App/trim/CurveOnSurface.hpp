@@ -32,6 +32,10 @@ public:
     // (u, v) segment between two of its points onto the curve itself: a chord's error is the
     // surface's error over the segment, which the kd-tree cells bound.
     bool straightInParameterPlane() const;
+    // The parameter s in [s0, s1] where the trimming curve's `coordinate` (0: u, 1: v) equals
+    // `value`, for a piece along which that coordinate is monotone and brackets the value (a
+    // piece of a straight curve); the nearer end where it does not bracket it.
+    double parameterWhere(int coordinate, double value, double s0, double s1) const;
 
 private:
     const BSplineSurface* surface_;

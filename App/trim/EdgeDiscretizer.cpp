@@ -78,7 +78,7 @@ std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurfa
 }
 
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
-                                   double simplification) {
+                                   double simplification, const PieceHalving& halving) {
     std::vector<CurvePoints> curves = pointsOf(uses);
     std::vector<double> params{0.0};
     // depth-first over [s0, s1] so that the parameters come out in increasing order
@@ -89,7 +89,12 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
         auto [s0, s1] = interval;
         if (depth < kMaxDepth && params.size() + stack.size() < kMaxPoints &&
             !flatEnough(curves, s0, s1, approximation)) {
-            const double mid = 0.5 * (s0 + s1);
+            double mid = 0.5 * (s0 + s1);
+            if (halving) {
+                // anything but a point strictly inside would loop or reorder the parameters
+                const double at = halving(s0, s1);
+                if (at > s0 && at < s1) mid = at;
+            }
             stack.push_back({{mid, s1}, depth + 1});
             stack.push_back({{s0, mid}, depth + 1});
             continue;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "trim/CurveOnSurface.hpp"
@@ -11,8 +12,11 @@ namespace nurbslod {
 // `approximation` of its chords (midpoint subdivision under the chord bound, paper section 5.1)
 // and then the polyline is simplified with a Hausdorff distance of `simplification` (the
 // paper's (1 - gamma) share). Returns the increasing parameters, 0 and 1 included.
+// `halving`, where given, says where a piece [s0, s1] that is not flat enough is split (by
+// default in the middle of s): ModelTessellator puts the points on a face's kd-tree lines.
+using PieceHalving = std::function<double(double s0, double s1)>;
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
-                                   double simplification);
+                                   double simplification, const PieceHalving& halving = {});
 
 // The same bound (`approximation` + `simplification` from every face's curve) reached with the
 // longest chords it allows: from each point the chord is stretched (doubling, then bisection)

@@ -1,0 +1,95 @@
+#include "tessellate/KdTreeAlignedHalving.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nurbslod {
+
+std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
+    const TrimmedSurface& face) {
+    constexpr double kMax = std::numeric_limits<double>::max();
+    Point2 low{kMax, kMax}, high{-kMax, -kMax};
+    for (const auto& loop : face.loops)
+        for (const auto& curve : loop.curves) {
+            const CurveOnSurface use(face.surface, curve.pcurve, curve.first, curve.last);
+            for (const Point2& p : {use.uv(0), use.uv(1)}) {
+                if (!p.allFinite()) return std::nullopt;
+                low = low.cwiseMin(p), high = high.cwiseMax(p);
+            }
+        }
+    if (!(high.x() > low.x()) || !(high.y() > low.y())) return std::nullopt;
+    const Point2 slack = 1e-12 * (high - low);
+    for (const auto& loop : face.loops)
+        for (const auto& curve : loop.curves)
+            for (const auto& pole : curve.pcurve.poles()) {
+                if (!(pole.z() > 0)) return std::nullopt;  // no convex hull to rely on
+                const Point2 p = projectHomogeneous(pole);
+                if (!((p.array() >= (low - slack).array()).all() &&
+                      (p.array() <= (high + slack).array()).all()))
+                    return std::nullopt;
+            }
+    return std::array<KdTreeGrid, 2>{
+        KdTreeGrid(low.x(), high.x(), face.surface.knotsU().breakpoints()),
+        KdTreeGrid(low.y(), high.y(), face.surface.knotsV().breakpoints())};
+}
+
+namespace {
+
+// The axis along which the kd-tree cuts a straight curve (see the header), or -1.
+int cuttingAxis(const CurveOnSurface& curve) {
+    if (!curve.straightInParameterPlane()) return -1;
+    const Point2 a = curve.uv(0), b = curve.uv(1);
+    const double length = (b - a).norm();
+    if (!(length > 0)) return -1;
+    if (std::abs(b.y() - a.y()) <= 1e-12 * length) return 0;
+    if (std::abs(b.x() - a.x()) <= 1e-12 * length) return 1;
+    const BSplineSurface& surface = curve.surface();
+    if (surface.degreeV() == 1 && surface.degreeU() > 1) return 0;
+    if (surface.degreeU() == 1 && surface.degreeV() > 1) return 1;
+    return -1;
+}
+
+PieceHalving halvingOn(const CurveOnSurface& curve, KdTreeGrid grid, int axis) {
+    return [curve, grid = std::move(grid), axis](double s0, double s1) {
+        const std::optional<double> line = grid.lineWithin(curve.uv(s0)[axis], curve.uv(s1)[axis]);
+        return line ? curve.parameterWhere(axis, *line, s0, s1) : 0.5 * (s0 + s1);
+    };
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
+    const std::vector<CurveOnSurface>& uses, std::size_t use,
+    const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
+    double simplification) {
+    const CurveOnSurface& curve = uses.at(use);
+    const int axis = cuttingAxis(curve);
+    if (axis < 0) return std::nullopt;
+    const double c0 = curve.uv(0)[axis], c1 = curve.uv(1)[axis];
+    if (!grids) {
+        // a kd-tree over the curve's own range: only an iso-parameter line has one
+        if (std::abs(curve.uv(0)[1 - axis] - curve.uv(1)[1 - axis]) > 1e-12 * std::abs(c1 - c0))
+            return std::nullopt;
+        return discretizeEdge(
+            uses, approximation, simplification,
+            halvingOn(curve, KdTreeGrid(std::min(c0, c1), std::max(c0, c1), {}), axis));
+    }
+    // Span borders first puts them among the points, but a span's halvings are finer than the
+    // frame's where the spans are uneven (a whole cylinder's three arcs: 180 points a circle
+    // instead of 128 and the 2 borders); the frame's halvings leave the borders to the kd-tree,
+    // which adds each as a point. Whichever leaves the curve fewer points.
+    const KdTreeGrid& grid = (*grids)[axis];
+    auto withBorders = [&](const std::vector<double>& params) {
+        std::vector<double> values;
+        for (double s : params) values.push_back(curve.uv(s)[axis]);
+        return params.size() + grid.bordersBetween(values);
+    };
+    std::vector<double> bordersFirst =
+        discretizeEdge(uses, approximation, simplification, halvingOn(curve, grid, axis));
+    std::vector<double> halvings = discretizeEdge(uses, approximation, simplification,
+                                                  halvingOn(curve, grid.halvingsOnly(), axis));
+    return withBorders(halvings) < withBorders(bordersFirst) ? halvings : bordersFirst;
+}
+
+}  // namespace nurbslod

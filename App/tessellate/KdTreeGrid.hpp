@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace nurbslod {
+
+// Integer steps across a face's boundary box in FaceTessellator's frame: 2^30 keeps Clipper in
+// its fast 64-bit range, and 1e-9 of a face is far below any tolerance a user asks for.
+inline constexpr std::int64_t kKdTreeFrameScale = std::int64_t(1) << 30;
+
+// The lines along one parameter axis on which a face's kd-tree can cut, in FaceTessellator's
+// integer frame over [low, high] (the boundary's box): the Bezier span borders, which it cuts
+// first, and the halvings of each span, which it cuts where a cell's bound says "split in the
+// middle" (every cell of a cylinder or a cone across its circles).
+//
+// An edge whose points lie on these lines is cut by no kd-tree line between its own points
+// (FaceTessellator splits through a boundary point near the middle, and here is one exactly
+// there); an edge halved in its own parameter gets a point from each cut as well: on a cylinder
+// whose two circles are parameterised unlike each other, both circles carry both sets.
+class KdTreeGrid {
+public:
+    KdTreeGrid(double low, double high, const std::vector<double>& breakpoints);
+
+    // The coarsest line strictly within the middle half of the interval between c0 and c1
+    // (either order), as a parameter value: a span border there if any (the one nearest the
+    // middle), otherwise the first halving of the span around it that lands there. None where
+    // the interval is below the frame's resolution or outside the frame.
+    std::optional<double> lineWithin(double c0, double c1) const;
+
+    // The same frame, its lines only the halvings of the whole frame: the span borders are cut
+    // all the same, but only where a cell holds one (bordersBetween counts those).
+    KdTreeGrid halvingsOnly() const;
+
+    // How many span borders lie strictly between the smallest and the largest of `values` and
+    // on none of them: the points the kd-tree's first cuts add to a curve with those points.
+    std::size_t bordersBetween(const std::vector<double>& values) const;
+
+private:
+    // the first halving of [a, b] (frame steps) that lands in [lo, hi], halving towards it
+    std::optional<double> halvingWithin(std::int64_t a, std::int64_t b, std::int64_t lo,
+                                        std::int64_t hi) const;
+    double parameterOf(std::int64_t x) const { return low_ + static_cast<double>(x) / scale_; }
+
+    std::int64_t stepOf(double value) const { return std::llround((value - low_) * scale_); }
+
+    double low_ = 0, scale_ = 1;
+    bool bordersFirst_ = true;
+    std::vector<std::int64_t> breaks_;  // span borders strictly inside, in frame steps, sorted
+};
+
+}  // namespace nurbslod
