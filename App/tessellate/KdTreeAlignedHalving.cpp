@@ -87,6 +87,7 @@ std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     };
     std::vector<double> bordersFirst =
         discretizeEdge(uses, approximation, simplification, halvingOn(curve, grid, axis));
+    if (!grid.hasBorders()) return bordersFirst;  // the same lines either way
     std::vector<double> halvings = discretizeEdge(uses, approximation, simplification,
                                                   halvingOn(curve, grid.halvingsOnly(), axis));
     return withBorders(halvings) < withBorders(bordersFirst) ? halvings : bordersFirst;

@@ -34,6 +34,8 @@ public:
     // The same frame, its lines only the halvings of the whole frame: the span borders are cut
     // all the same, but only where a cell holds one (bordersBetween counts those).
     KdTreeGrid halvingsOnly() const;
+    // Whether a span border lies inside the frame (else the halvings are the only lines).
+    bool hasBorders() const { return !breaks_.empty(); }
 
     // How many span borders lie strictly between the smallest and the largest of `values` and
     // on none of them: the points the kd-tree's first cuts add to a curve with those points.
