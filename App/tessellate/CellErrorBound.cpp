@@ -106,6 +106,26 @@ DifferenceRange rangeOf(const BezierPatch& difference, int pieces, bool trimmedC
     return range;
 }
 
+// |w_perp| of CellErrorBound::planarTwist, or infinity where the corners projected onto the
+// plane of the sides at c00 do not make a strictly convex quadrilateral (c00, c10, c11, c01).
+double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11) {
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    const Point3 a = c10 - c00, b = c01 - c00, w = c00 - c10 - c01 + c11;
+    const Point3 normal = a.cross(b);
+    const double area = normal.norm();
+    if (!(area > 1e-300) || !std::isfinite(area)) return kNone;
+    const Point3 n = normal / area;
+    const Point3 wNormal = w.dot(n) * n;
+    // the quadrilateral c00, c10, c11 - wNormal, c01 in the plane: each turn the same way
+    const Point3 corner[4] = {c00, c10, c11 - wNormal, c01};
+    for (int k = 0; k < 4; ++k) {
+        const Point3 side = corner[(k + 1) % 4] - corner[k];
+        const Point3 next = corner[(k + 2) % 4] - corner[(k + 1) % 4];
+        if (!(side.cross(next).dot(n) > 1e-12 * side.norm() * next.norm())) return kNone;
+    }
+    return wNormal.norm();
+}
+
 // Subdivision of E pays only near the target: far above it the cell is split anyway.
 constexpr double kWorthRefining = 2.0;
 // Parts per side tried: 1 (E's own net), then 2; 4 parts were measured to save under 0.1 % of
@@ -124,6 +144,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     };
     CellErrorBound bound;
     bound.twist = 0.25 * (c00 - c10 - c01 + c11).norm();
+    bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
 
     // Points standing for the surface: control points (conservative) or surface points at the
     // control points' parameters (approximate).
@@ -183,9 +204,12 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
              pieces *= 2) {
             const DifferenceRange range = rangeOf(difference, pieces, trimmedCell);
             keep(range);
-            // both bounds are at least max |E| + twist (E = 0 at the corners, which are on the
-            // sides): a surface point that far off means no subdivision can reach the target
-            if (range.largestValue + bound.twist > target) break;
+            // both bounds are at least max |E| plus their twist term (E = 0 at the corners, which
+            // are on the sides): a surface point that far off means no subdivision can reach the
+            // target
+            const double twistTerm =
+                trimmedCell ? bound.twist : std::min(bound.twist, bound.planarTwist);
+            if (range.largestValue + twistTerm > target) break;
         }
     }
 

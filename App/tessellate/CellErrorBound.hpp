@@ -1,5 +1,8 @@
 #pragma once
 
+#include <algorithm>
+#include <limits>
+
 #include "geometry/BezierPatch.hpp"
 #include "tessellate/TessellationOptions.hpp"
 
@@ -35,12 +38,27 @@ struct CellErrorBound {
     double spreadToEdges = 0;
     // Bound on |E(x) - E(y)|, x and y anywhere in the cell (at most 2 interior).
     double spread = 0;
+    // Where the four corners make a convex quadrilateral in a plane but for w_perp, the part of
+    // w = P00 - Pm0 - P0n + Pmn normal to the plane of the sides at P00: |w_perp|; infinity
+    // otherwise. Every cell of a surface of revolution cut along its meridians and parallels
+    // is an isosceles trapezoid (w_perp = 0), whose twist is a quarter of the difference of
+    // its parallel sides: on a cone's column or a sphere's cell near the pole, as large as the
+    // bulge itself. That twist moves the triangles within the trapezoid's plane only, and the
+    // distance to the surface does not see it, both ways: write B = B' + s t w_perp, B' the
+    // planar bilinear map onto the quadrilateral. Triangles through points on the cell's sides,
+    // flattened by B', tile B'(cell); a triangle point M = sum lambda_k S(p_k) then has the
+    // parameter x with B'(x) = sum lambda_k B'(p_k), and
+    //   M - S(x) = [sum lambda_k E(p_k) - E(x)] + w_perp (sum lambda_k s_k t_k - s t),
+    // at most spreadToEdges + |w_perp|; a surface point S(x) has the triangle point M with that
+    // B'(x) the same way. A geometric bound, not at equal parameters as `twist`: the verifier and
+    // the guarantee measure distances.
+    double planarTwist = std::numeric_limits<double>::infinity();
     // Preferred split: direction (0 = u, 1 = v) and local position in (0, 1).
     int splitDirection = 0;
     double splitAt = 0.5;
 
     // Bound for triangles whose corners are cell corners or lie on the cell edges.
-    double untrimmed() const { return spreadToEdges + twist; }
+    double untrimmed() const { return spreadToEdges + std::min(twist, planarTwist); }
     // Bound for triangles with corners anywhere in the cell (trimming points).
     double trimmed() const { return spread + twist; }
     // What the kd-tree compares with its target: in mode Approximate the paper's estimate

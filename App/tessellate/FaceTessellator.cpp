@@ -66,10 +66,12 @@ bool coversWithMargin(const Paths& region, const Rect& r) {
 // In guaranteed mode the verifier measures both ways: from each mesh point to the face, and
 // from each face point to the mesh. A full cell's triangles have every corner on the surface at
 // a parameter on the cell's sides (its corners and its neighbours', none on a trimming curve
-// nor shared with another face), so the triangle point at (u, v) in the cell is within
-// untrimmed() of S(u, v), and S(u, v) is a point of the face, as the whole cell lies inside the
-// trimmed region: both ways the distance is at most the cell bound. None of the trimming share
-// (chords and their simplification) nor of the shared-edge gap is spent there: those errors
+// nor shared with another face), so each triangle point is within untrimmed() of a surface
+// point S(x) of the cell and each S(x) within it of a triangle point (CellErrorBound: x is the
+// triangle point's own (u, v), or where the cell's corners are a flat quadrilateral, the
+// parameter of the same point of it), and S(x) is a point of the face, as the whole cell lies
+// inside the trimmed region: both ways the distance is at most the cell bound. None of the trimming
+// share (chords and their simplification) nor of the shared-edge gap is spent there: those errors
 // are measured on triangles that touch the boundary, which are in trimmed cells. So a full cell
 // may take the surface share plus both trimming shares plus the half gap (0.95 of the
 // tolerance with ErrorBudget::of) and keep the same slack; a trimmed cell keeps the surface
