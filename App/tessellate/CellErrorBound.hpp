@@ -62,9 +62,12 @@ struct CellErrorBound {
     // Bound for triangles with corners anywhere in the cell (trimming points).
     double trimmed() const { return spread + twist; }
     // What the kd-tree compares with its target: in mode Approximate the paper's estimate
-    // (interior + twist), otherwise the bound for a cell the trimming curves may cross or not.
+    // (interior + twist, the twist of a flat cell the trimming curves do not cross taken as
+    // planarTwist, as in untrimmed()), otherwise the bound for a cell the trimming curves may
+    // cross or not.
     double measure(ErrorMode mode, bool trimmedCell) const {
-        if (mode == ErrorMode::Approximate) return interior + twist;
+        if (mode == ErrorMode::Approximate)
+            return interior + (trimmedCell ? twist : std::min(twist, planarTwist));
         return trimmedCell ? trimmed() : untrimmed();
     }
 };
