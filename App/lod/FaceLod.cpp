@@ -110,6 +110,7 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         options.mode = ErrorMode::Guaranteed;  // the screen-space error is a bound, not a guess
         options.splitThroughBoundaryPoints = false;
         options.freeEdgesTakeSurfaceShare = false;  // the face alone: its edges are not free
+        options.flatCellsByDistance = false;        // normals are measured at equal parameters
         TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;

@@ -111,10 +111,7 @@ int FaceLodCache::normalErrorLevel(int face, double normalErrorDeg, int fromLeve
     } else {
         const int step = static_cast<int>(std::ceil(std::log2(overDeg / normalErrorDeg)));
         wanted = over + std::clamp(step, 1, largestStep);
-        // a level within the bound with unmeasured levels between it and the finest one over
-        // it: the error is not exactly second order (cells are halved, not shrunk evenly), so the
-        // step may have gone past the coarsest level within the bound; the middle one decides
-        if (meeting >= 0) wanted = meeting - over > 1 ? over + (meeting - over) / 2 : meeting;
+        if (meeting >= 0) wanted = std::min(meeting, wanted);
     }
     return std::clamp(wanted, fromLevel, std::max(fromLevel, finest));
 }

@@ -135,7 +135,7 @@ constexpr int kMostPieces = 2;
 }  // namespace
 
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target,
-                              bool trimmedCell) {
+                              bool trimmedCell, bool byDistance) {
     const int m = patch.degreeU(), n = patch.degreeV();
     const Point3 c00 = patch.pole3(0, 0), c10 = patch.pole3(m, 0);
     const Point3 c01 = patch.pole3(0, n), c11 = patch.pole3(m, n);
@@ -144,7 +144,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     };
     CellErrorBound bound;
     bound.twist = 0.25 * (c00 - c10 - c01 + c11).norm();
-    bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
+    if (byDistance) bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
 
     // Points standing for the surface: control points (conservative) or surface points at the
     // control points' parameters (approximate).

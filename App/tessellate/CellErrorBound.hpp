@@ -80,7 +80,8 @@ struct CellErrorBound {
 // `target`.
 // Approximate: the control points replaced by surface points at the control points' parameters
 // (paper section 5.2); `target` is not used.
+// With `byDistance` false, planarTwist stays infinite: the bounds hold at equal parameters.
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
-                              bool trimmedCell = false);
+                              bool trimmedCell = false, bool byDistance = true);
 
 }  // namespace nurbslod

@@ -62,6 +62,20 @@ bool coversWithMargin(const Paths& region, const Rect& r) {
     return true;
 }
 
+// The region's piece of a cell is the whole cell: one path through its four corners with every
+// point on its sides (the boundary runs along them, or beyond them by up to the margin).
+bool isWholeCell(const Paths& piece, const Rect& r) {
+    const Paths inside = clip(piece, r, true);
+    if (inside.size() != 1) return false;
+    int corners = 0;
+    for (const IntPoint& p : inside[0]) {
+        const bool onX = p.X == r.x0 || p.X == r.x1, onY = p.Y == r.y0 || p.Y == r.y1;
+        if (!onX && !onY) return false;
+        corners += onX && onY;
+    }
+    return corners == 4;
+}
+
 // The error a full cell (inside the trimmed region with a margin) may spend on its surface.
 // In guaranteed mode the verifier measures both ways: from each mesh point to the face, and
 // from each face point to the mesh. A full cell's triangles have every corner on the surface at
@@ -240,11 +254,13 @@ struct BoundaryIndex {
 }  // namespace
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
-                                 ErrorMode mode, bool splitThroughBoundaryPoints)
+                                 ErrorMode mode, bool splitThroughBoundaryPoints,
+                                 bool flatCellsByDistance)
     : face_(face),
       budget_(budget),
       mode_(mode),
       splitThroughBoundaryPoints_(splitThroughBoundaryPoints),
+      flatCellsByDistance_(flatCellsByDistance),
       patches_(face.surface) {}
 
 FaceTessellator::~FaceTessellator() = default;
@@ -324,6 +340,14 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         Node node = std::move(stack.back());
         stack.pop_back();
         const Rect& r = node.rect;
+        // A cell the region fills exactly, its boundary running along the cell's sides (a
+        // cylinder's circles on its columns): every triangle corner is on a side, as in a full
+        // cell, so the bound for corners on the sides holds (CellErrorBound::untrimmed), with
+        // the surface share as the target: its boundary triangles spend the other shares. Not
+        // on a face with free edges: the points its cells leave on their chords are dropped
+        // where the triangles change little (removeOpenBoundaryPoints), and the larger cells
+        // change them more (wing.brep at 1e-4: 166 open edges instead of 98, BRepMesh 100).
+        bool sidesOnly = false;
         if (!node.full) {
             // Most cells are wholly inside or outside: told apart without clipping. The others
             // are clipped to the cell grown by the margin, not to the cell: a child shares sides
@@ -349,6 +373,9 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                     std::abs(area) >= (1 - 1e-9) * grownArea && coversWithMargin(*node.region, r);
                 if (!covered) {
                     if (!any) continue;  // outside the trimmed region: neither leaf nor parent
+                    const double cellArea = double(r.x1 - r.x0) * double(r.y1 - r.y0);
+                    sidesOnly = budget_.openChords == 0 &&
+                                std::abs(area) >= (1 - 1e-9) * cellArea && isWholeCell(piece, r);
                     node.region = std::make_shared<const Paths>(std::move(piece));
                 }
             }
@@ -397,8 +424,10 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
         const BezierPatch piece = patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y());
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
-        const CellErrorBound bound = cellErrorBound(piece, mode_, target, !node.full);
-        if (bound.measure(mode_, !node.full) <= target) {
+        const bool trimmedCell = !node.full && !sidesOnly;
+        const CellErrorBound bound =
+            cellErrorBound(piece, mode_, target, trimmedCell, flatCellsByDistance_);
+        if (bound.measure(mode_, trimmedCell) <= target) {
             leaves_[node.index].leaf = true;
             continue;
         }

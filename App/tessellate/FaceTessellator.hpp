@@ -31,8 +31,9 @@ struct FaceWithoutArea : std::runtime_error {
 // triangulate() cuts and triangulates the leaves with the completed boundary.
 class FaceTessellator {
 public:
+    // The two choices are TessellationOptions' of the same names.
     FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode,
-                    bool splitThroughBoundaryPoints = true);
+                    bool splitThroughBoundaryPoints = true, bool flatCellsByDistance = true);
     ~FaceTessellator();
 
     // Throws std::runtime_error with the reason when the face cannot be tessellated.
@@ -59,6 +60,7 @@ private:
     ErrorBudget budget_;
     ErrorMode mode_;
     bool splitThroughBoundaryPoints_;
+    bool flatCellsByDistance_;
     BezierPatchGrid patches_;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;

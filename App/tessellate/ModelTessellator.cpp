@@ -822,7 +822,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (!failure[f].empty()) return;
         try {
             tessellators[f] = std::make_unique<FaceTessellator>(
-                model.faces[f], faceBudgets[f], options.mode, options.splitThroughBoundaryPoints);
+                model.faces[f], faceBudgets[f], options.mode, options.splitThroughBoundaryPoints,
+                options.flatCellsByDistance);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
         } catch (const FaceWithoutArea&) {
             thinFace[f] = 1;

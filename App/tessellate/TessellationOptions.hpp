@@ -23,6 +23,12 @@ struct TessellationOptions {
     // fewer open edges along the model's own boundary. The display tessellates each face alone,
     // where every edge looks free and none is an open edge anyone counts: it keeps the split.
     bool freeEdgesTakeSurfaceShare = true;
+    // Bound a full kd-tree cell whose corners make a flat quadrilateral by its distance to the
+    // surface (CellErrorBound::planarTwist), not at equal parameters: fewer triangles for the
+    // same distance, most on surfaces of revolution. The display keeps the bound at equal
+    // parameters: the error of its interpolated normals, measured at equal parameters
+    // (InterpolatedNormalError), falls with the tolerance only under that bound.
+    bool flatCellsByDistance = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
