@@ -254,14 +254,8 @@ struct BoundaryIndex {
 }  // namespace
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
-                                 ErrorMode mode, bool splitThroughBoundaryPoints,
-                                 bool flatCellsByDistance)
-    : face_(face),
-      budget_(budget),
-      mode_(mode),
-      splitThroughBoundaryPoints_(splitThroughBoundaryPoints),
-      flatCellsByDistance_(flatCellsByDistance),
-      patches_(face.surface) {}
+                                 ErrorMode mode, const CellChoices& choices)
+    : face_(face), budget_(budget), mode_(mode), choices_(choices), patches_(face.surface) {}
 
 FaceTessellator::~FaceTessellator() = default;
 
@@ -343,10 +337,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         // A cell the region fills exactly, its boundary running along the cell's sides (a
         // cylinder's circles on its columns): every triangle corner is on a side, as in a full
         // cell, so the bound for corners on the sides holds (CellErrorBound::untrimmed), with
-        // the surface share as the target: its boundary triangles spend the other shares. Not
-        // on a face with free edges: the points its cells leave on their chords are dropped
-        // where the triangles change little (removeOpenBoundaryPoints), and the larger cells
-        // change them more (wing.brep at 1e-4: 166 open edges instead of 98, BRepMesh 100).
+        // the surface share as the target: its boundary triangles spend the other shares.
         bool sidesOnly = false;
         if (!node.full) {
             // Most cells are wholly inside or outside: told apart without clipping. The others
@@ -374,7 +365,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 if (!covered) {
                     if (!any) continue;  // outside the trimmed region: neither leaf nor parent
                     const double cellArea = double(r.x1 - r.x0) * double(r.y1 - r.y0);
-                    sidesOnly = budget_.openChords == 0 &&
+                    sidesOnly = choices_.filledCellsBySides &&
                                 std::abs(area) >= (1 - 1e-9) * cellArea && isWholeCell(piece, r);
                     node.region = std::make_shared<const Paths>(std::move(piece));
                 }
@@ -426,7 +417,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
         const CellErrorBound bound =
-            cellErrorBound(piece, mode_, target, trimmedCell, flatCellsByDistance_);
+            cellErrorBound(piece, mode_, target, trimmedCell, choices_.flatCellsByDistance);
         if (bound.measure(mode_, trimmedCell) <= target) {
             leaves_[node.index].leaf = true;
             continue;
@@ -442,7 +433,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
         const cInt at =
             std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
-        split(direction, node.full || !splitThroughBoundaryPoints_
+        split(direction, node.full || !choices_.splitThroughBoundaryPoints
                              ? at
                              : throughBoundaryPoint(*node.region, r, direction, at));
     }

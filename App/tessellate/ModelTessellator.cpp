@@ -309,13 +309,17 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // A face with a free edge gives surface share to its chords and to dropping the points
     // cell sides leave on them (ErrorBudget::withFreeEdges): each segment of a free edge is an
     // open edge of the mesh. Not a face whose cells bound all its chords: it has no trimming.
-    for (int f = 0; f < faceCount && options.freeEdgesTakeSurfaceShare; ++f) {
-        if (!failure[f].empty() || chordsOnSurface[f]) continue;
-        bool free = false;
+    auto hasFreeEdge = [&](int f) {
         for (const auto& loop : model.faces[f].loops)
             for (const auto& curve : loop.curves)
-                free |= uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated;
-        if (free) faceBudgets[f] = faceBudgets[f].withFreeEdges(options.tolerance, options.mode);
+                if (uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated)
+                    return true;
+        return false;
+    };
+    for (int f = 0; f < faceCount && options.freeEdgesTakeSurfaceShare; ++f) {
+        if (!failure[f].empty() || chordsOnSurface[f]) continue;
+        if (hasFreeEdge(f))
+            faceBudgets[f] = faceBudgets[f].withFreeEdges(options.tolerance, options.mode);
     }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
     // sum must hold), leaving out the use whose cells bound its chords and the faces whose
@@ -821,9 +825,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
-            tessellators[f] = std::make_unique<FaceTessellator>(
-                model.faces[f], faceBudgets[f], options.mode, options.splitThroughBoundaryPoints,
-                options.flatCellsByDistance);
+            CellChoices choices;
+            choices.splitThroughBoundaryPoints = options.splitThroughBoundaryPoints;
+            choices.flatCellsByDistance = options.flatCellsByDistance;
+            choices.filledCellsBySides = !hasFreeEdge(f);
+            tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f],
+                                                                options.mode, choices);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
         } catch (const FaceWithoutArea&) {
             thinFace[f] = 1;
