@@ -36,18 +36,24 @@ std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
 
 namespace {
 
-// The axis along which the kd-tree cuts a straight curve (see the header), or -1.
-int cuttingAxis(const CurveOnSurface& curve) {
-    if (!curve.straightInParameterPlane()) return -1;
+// The axis along which the kd-tree cuts a straight curve (see the header; -1: none), and
+// whether the curve is an iso-parameter line along it.
+struct CuttingAxis {
+    int axis = -1;
+    bool isoLine = false;
+};
+
+CuttingAxis cuttingAxisOf(const CurveOnSurface& curve) {
+    if (!curve.straightInParameterPlane()) return {};
     const Point2 a = curve.uv(0), b = curve.uv(1);
     const double length = (b - a).norm();
-    if (!(length > 0)) return -1;
-    if (std::abs(b.y() - a.y()) <= 1e-12 * length) return 0;
-    if (std::abs(b.x() - a.x()) <= 1e-12 * length) return 1;
+    if (!(length > 0)) return {};
+    if (std::abs(b.y() - a.y()) <= 1e-12 * length) return {0, true};
+    if (std::abs(b.x() - a.x()) <= 1e-12 * length) return {1, true};
     const BSplineSurface& surface = curve.surface();
-    if (surface.degreeV() == 1 && surface.degreeU() > 1) return 0;
-    if (surface.degreeU() == 1 && surface.degreeV() > 1) return 1;
-    return -1;
+    if (surface.degreeV() == 1 && surface.degreeU() > 1) return {0, false};
+    if (surface.degreeU() == 1 && surface.degreeV() > 1) return {1, false};
+    return {};
 }
 
 PieceHalving halvingOn(const CurveOnSurface& curve, KdTreeGrid grid, int axis) {
@@ -64,13 +70,12 @@ std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
     double simplification) {
     const CurveOnSurface& curve = uses.at(use);
-    const int axis = cuttingAxis(curve);
+    const auto [axis, isoLine] = cuttingAxisOf(curve);
     if (axis < 0) return std::nullopt;
     const double c0 = curve.uv(0)[axis], c1 = curve.uv(1)[axis];
     if (!grids) {
         // a kd-tree over the curve's own range: only an iso-parameter line has one
-        if (std::abs(curve.uv(0)[1 - axis] - curve.uv(1)[1 - axis]) > 1e-12 * std::abs(c1 - c0))
-            return std::nullopt;
+        if (!isoLine) return std::nullopt;
         return discretizeEdge(
             uses, approximation, simplification,
             halvingOn(curve, KdTreeGrid(std::min(c0, c1), std::max(c0, c1), {}), axis));
