@@ -59,6 +59,12 @@ Point3 centroid(const std::vector<Point3>& points) {
     return c / static_cast<double>(points.size());
 }
 
+double farthest(const std::vector<Point3>& points, const Point3& from) {
+    double d = 0;
+    for (const auto& p : points) d = std::max(d, (p - from).norm());
+    return d;
+}
+
 double spread(const std::vector<Point3>& points) {
     double d = 0;
     for (size_t i = 0; i < points.size(); ++i)
@@ -204,6 +210,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     });
 
+    // Which B-rep vertex sits at which end of the edge's parameter range is read from the
+    // geometry: the importer's notion of first and last follows orientation flags that sloppy
+    // files do not always keep.
+    std::vector<std::pair<int, int>> endVertices(model.edges.size());
+    for (size_t e = 0; e < model.edges.size(); ++e) {
+        const ModelEdge& edge = model.edges[e];
+        endVertices[e] = {edge.firstVertex, edge.lastVertex};
+        if (uses[e].empty() || edge.firstVertex < 0 || edge.lastVertex < 0) continue;
+        const auto curve = curveOnSurface(uses[e].front());
+        const Point3 start = curve.point(0.0), end = curve.point(1.0);
+        const Point3& first = model.vertices[edge.firstVertex].point;
+        const Point3& last = model.vertices[edge.lastVertex].point;
+        if ((start - last).norm() + (end - first).norm() <
+            (start - first).norm() + (end - last).norm())
+            std::swap(endVertices[e].first, endVertices[e].second);
+    }
     // Per-edge share gap (ErrorBudget::withShareGap). Along each shared edge, the faces' gap is
     // measured as the vertices are placed below (commonPointOf) at evenly spaced parameters;
     // where it is over the fixed share gap and every face of the edge can give the difference
@@ -211,17 +233,21 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // the samples, and its faces spend that much. A point of the edge found farther off than
     // its gap still stays one per face (shareVertices): the guarantee never rests on the
     // samples.
+    // The same samples, and the ends of the curves at each B-rep vertex, give every face the
+    // gap its shared points need (narrowGap); where that is below the fixed share gap, the face
+    // narrows its gap to it further down (ErrorBudget::withNarrowerShareGap).
     std::vector<double> edgeShareGap(model.edges.size(), budget.shareGap);
+    std::vector<double> narrowGap(faceCount, 0);
     if (options.mode == ErrorMode::Guaranteed) {
         constexpr int samples = 32;
         constexpr double margin = 1.2;
         const double largestGap = 2 * 0.95 * options.tolerance;
-        std::vector<double> needed(model.edges.size(), 0);
+        std::vector<double> needed(model.edges.size(), 0), sharedNeed(model.edges.size(), 0);
         tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
             if (uses[e].size() < 2 || model.edges[e].degenerated) return;
             std::vector<CurveOnSurface> curves;
             for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
-            double farthestOffset = 0;
+            double farthestOffset = 0, nearestOffset = 0;
             for (int i = 1; i < samples && farthestOffset < largestGap; ++i) {
                 const double s = double(i) / samples;
                 std::vector<Point3> own;
@@ -230,7 +256,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     own.push_back(c.point(s));
                     start.push_back(c.uv(s));
                 }
-                if (spread(own) <= budget.shareGap) continue;  // shared as before
+                if (spread(own) <= budget.shareGap) {  // shared as before, midway
+                    nearestOffset = std::max(nearestOffset, farthest(own, centroid(own)));
+                    continue;
+                }
                 // a point with no common point within reach stays one per face whatever the
                 // gap; one where the surfaces meet within the fixed gap needs no more
                 if (const double offset =
@@ -239,6 +268,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     farthestOffset = std::max(farthestOffset, offset);
             }
             needed[e] = 2 * margin * farthestOffset;
+            sharedNeed[e] = 2 * margin * std::max(nearestOffset, farthestOffset);
         });
         std::vector<double> faceGap(faceCount, budget.shareGap);
         for (size_t e = 0; e < model.edges.size(); ++e) {
@@ -254,6 +284,33 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (int f = 0; f < faceCount; ++f)
             faceBudgets[f] =
                 faceBudgets[f].withShareGap(faceGap[f], options.tolerance, options.mode);
+
+        // The gap each face's shared points need: its shared edges' samples, and the curves'
+        // ends at its B-rep vertices (exact there, but with the margin too: those ends move
+        // onto the vertex's foot on each surface below). At least a fiftieth of the tolerance,
+        // so that the points between samples rarely fall out of it (they would stay one per
+        // face: open edges).
+        constexpr double kNarrowestGap = 0.02;
+        std::fill(narrowGap.begin(), narrowGap.end(), kNarrowestGap * options.tolerance);
+        std::map<int, std::vector<std::pair<int, Point3>>> ends;  // B-rep vertex: (face, point)
+        for (size_t e = 0; e < model.edges.size(); ++e) {
+            if (uses[e].size() >= 2 && !model.edges[e].degenerated)
+                for (const auto& u : uses[e])
+                    narrowGap[u.face] = std::max(narrowGap[u.face], sharedNeed[e]);
+            for (const auto& u : uses[e]) {
+                const CurveOnSurface curve = curveOnSurface(u);
+                if (endVertices[e].first >= 0)
+                    ends[endVertices[e].first].push_back({u.face, curve.point(0.0)});
+                if (endVertices[e].second >= 0)
+                    ends[endVertices[e].second].push_back({u.face, curve.point(1.0)});
+            }
+        }
+        for (const auto& [vertex, list] : ends) {
+            std::vector<Point3> points;
+            for (const auto& [face, p] : list) points.push_back(p);
+            const double need = 2 * margin * farthest(points, centroid(points));
+            for (const auto& [face, p] : list) narrowGap[face] = std::max(narrowGap[face], need);
+        }
     }
     // a face's budget after a change of its other shares: its share gap kept where it can be,
     // and its edges' gaps held to what it keeps
@@ -321,16 +378,32 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (hasFreeEdge(f))
             faceBudgets[f] = faceBudgets[f].withFreeEdges(options.tolerance, options.mode);
     }
+    // A face whose shared points all need less than its share gap narrows it to what they need
+    // (ErrorBudget::withNarrowerShareGap) and its edges' gaps follow: a shared point found
+    // farther off stays one per face. Not a face with a free edge: the removal of the points
+    // that cell sides leave on its free chords spends its half gap too (withFreeEdges).
+    const std::vector<ErrorBudget> unnarrowed = faceBudgets;
+    if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
+        for (int f = 0; f < faceCount; ++f)
+            if (failure[f].empty() && !hasFreeEdge(f))
+                faceBudgets[f] = faceBudgets[f].withNarrowerShareGap(narrowGap[f], options.mode);
+        for (size_t e = 0; e < model.edges.size(); ++e)
+            for (const auto& u : uses[e])
+                edgeShareGap[e] = std::min(edgeShareGap[e], faceBudgets[u.face].shareGap);
+    }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
     // sum must hold), leaving out the use whose cells bound its chords and the faces whose
     // cells bound all their chords.
     auto edgeBudget = [&](size_t e, bool withCurveUse) {
         ErrorBudget edge = budget;
-        double trimming = ErrorBudget::largestTrimming(options.tolerance, options.mode);
+        // no face to limit it: the most any face's curves can take with the fixed share gap
+        double trimming = std::numeric_limits<double>::infinity();
         for (size_t k = 0; k < uses[e].size(); ++k)
             if ((!withCurveUse || static_cast<int>(k) != curveUse[e]) &&
                 !chordsOnSurface[uses[e][k].face])
                 trimming = std::min(trimming, faceBudgets[uses[e][k].face].trimming());
+        if (!std::isfinite(trimming))
+            trimming = ErrorBudget::largestTrimming(options.tolerance, options.mode);
         edge.setTrimming(trimming);
         return edge;
     };
@@ -388,6 +461,44 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         sampleUses(e);
     };
     tbb::parallel_for(size_t(0), model.edges.size(), discretizeOnce);
+
+    // 1a. A narrowed gap is checked at its edges' own points: where the faces' points of one are
+    // farther apart than it (between the samples above), the faces of that edge take their
+    // gap back (the fixed split, or what the face had before narrowing) and their edges are
+    // discretised again with it. hammer.iges at relative 1e-4 had one point 0.06 T apart on an
+    // edge narrowed to 0.04 T: an open crack.
+    if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
+        std::vector<char> tooNarrow(model.edges.size(), 0);
+        tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+            if (uses[e].size() < 2 || model.edges[e].degenerated ||
+                !(edgeShareGap[e] < budget.shareGap))
+                return;
+            const auto& poly = polylines[e];
+            for (size_t k = 1; k + 1 < poly.params.size() && !tooNarrow[e]; ++k) {
+                std::vector<Point3> own;
+                for (size_t u = 0; u < uses[e].size(); ++u)
+                    own.push_back(model.faces[uses[e][u].face].surface.point(poly.uv[u][k].x(),
+                                                                             poly.uv[u][k].y()));
+                tooNarrow[e] = farthest(own, centroid(own)) > 0.5 * edgeShareGap[e];
+            }
+        });
+        std::set<int> widened, again;
+        for (size_t e = 0; e < model.edges.size(); ++e)
+            if (tooNarrow[e])
+                for (const auto& u : uses[e]) widened.insert(u.face);
+        for (const int f : widened) {
+            faceBudgets[f] = unnarrowed[f];
+            for (const auto& loop : model.faces[f].loops)
+                for (const auto& curve : loop.curves) again.insert(curve.edge);
+        }
+        for (const int e : again) {
+            edgeShareGap[e] = budget.shareGap;
+            for (const auto& u : uses[e])
+                edgeShareGap[e] = std::min(edgeShareGap[e], faceBudgets[u.face].shareGap);
+        }
+        const std::vector<int> edges(again.begin(), again.end());
+        tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
+    }
 
     // The segments of face f's boundary polygon that cross another of its segments, as
     // (edge, segment) pairs: proper crossings only, so segments that share an end (consecutive
@@ -550,22 +661,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     }
 
     // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
-    // Which B-rep vertex sits at which end of the edge's parameter range is read from the
-    // geometry: the importer's notion of first and last follows orientation flags that sloppy
-    // files do not always keep.
-    std::vector<std::pair<int, int>> endVertices(model.edges.size());
-    for (size_t e = 0; e < model.edges.size(); ++e) {
-        const ModelEdge& edge = model.edges[e];
-        endVertices[e] = {edge.firstVertex, edge.lastVertex};
-        if (uses[e].empty() || edge.firstVertex < 0 || edge.lastVertex < 0) continue;
-        const auto curve = curveOnSurface(uses[e].front());
-        const Point3 start = curve.point(0.0), end = curve.point(1.0);
-        const Point3& first = model.vertices[edge.firstVertex].point;
-        const Point3& last = model.vertices[edge.lastVertex].point;
-        if ((start - last).norm() + (end - first).norm() <
-            (start - first).norm() + (end - last).norm())
-            std::swap(endVertices[e].first, endVertices[e].second);
-    }
     // A sloppy file may stop a trimming curve short of its B-rep vertex (by up to the vertex's
     // tolerance), while the exact face reaches the vertex: each curve end then moves to the
     // vertex's foot on the face's surface, so that the face covers its corner and the faces
@@ -599,11 +694,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // how far each shared position is from the faces' own points it stands for: the share
     // budget it spends (0 for a point of one face)
     std::vector<double> offsets;
-    auto farthest = [](const std::vector<Point3>& points, const Point3& from) {
-        double d = 0;
-        for (const auto& p : points) d = std::max(d, (p - from).norm());
-        return d;
-    };
     std::map<std::pair<int, int>, std::uint32_t> vertexOfBrepVertex;  // (vertex, face or -1)
     {
         // endpoint positions of every use, by B-rep vertex
@@ -628,7 +718,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             // within the fixed gap as before; within a wider one, its point is within half of
             // it of every face's own point
-            if (spread(all) <= budget.shareGap || farthest(all, centroid(all)) <= 0.5 * gap) {
+            if ((spread(all) <= budget.shareGap && gap >= budget.shareGap) ||
+                farthest(all, centroid(all)) <= 0.5 * gap) {
                 vertexOfBrepVertex[{vertex, -1}] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(all));
                 offsets.push_back(farthest(all, positions.back()));
@@ -693,7 +784,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             std::vector<Point3> points;
             for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
-            if (spread(points) <= budget.shareGap ||
+            if ((spread(points) <= budget.shareGap && edgeShareGap[e] >= budget.shareGap) ||
                 farthest(points, centroid(points)) <= 0.5 * edgeShareGap[e]) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));

@@ -29,6 +29,10 @@ struct TessellationOptions {
     // parameters: the error of its interpolated normals, measured at equal parameters
     // (InterpolatedNormalError), falls with the tolerance only under that bound.
     bool flatCellsByDistance = true;
+    // A face whose edges' faces meet closer than the fixed share gap spends only what they need
+    // on it and gives the rest to its surface and chords (ErrorBudget::withNarrowerShareGap).
+    // Off only to measure what that saves.
+    bool narrowShareGaps = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
