@@ -860,11 +860,19 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     points.push_back({poly.uv[u][k], poly.vertices[u][k]});
                     segmentAfter.push_back(static_cast<int>(k));
                     if (k + 1 == n) break;
+                    // Not on a segment where this face's clipper placed cuts of its own: those
+                    // lie on its (u, v) chord, and feet on the curve beside them, up to the
+                    // chord's sag away, can zigzag across the cell side that made them where
+                    // the boundary runs nearly along it (bottle.brep's thread tip at relative
+                    // 1e-3 with merged chords: six open edges).
+                    bool ownCuts = false;
+                    for (const auto& ins : poly.inserted[k])
+                        ownCuts |= exactPoints.count({e, u, ins.vertices[u]}) > 0;
                     for (const auto& ins : poly.inserted[k]) {
                         BoundaryPoint p{
                             (1 - ins.lambda) * poly.uv[u][k] + ins.lambda * poly.uv[u][k + 1],
                             ins.vertices[u]};
-                        if (onOtherCurve)
+                        if (onOtherCurve && !ownCuts)
                             p.uv = projectOntoSurface(face.surface, positions[p.vertex], p.uv).uv;
                         if (auto it = exactPoints.find({e, u, p.vertex}); it != exactPoints.end()) {
                             p.exact = true;
