@@ -440,8 +440,17 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (curves.size() == 1)
             return discretizeEdgeByLongestChords(curves, edge.lineApproximation,
                                                  edge.lineSimplification);
-        if (auto params = onKdTreeLines(e, curves, edge)) return *params;
-        return discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
+        // Midpoint subdivision stops anywhere between a quarter and all of the bound, and the
+        // paper's simplification (a quarter of the share, on the polyline) merges little on
+        // evenly bent curves: the points are then thinned to the chords that the whole share
+        // allows on the exact curves (mergeChords). On kd-tree lines the points kept are still
+        // on them.
+        std::vector<double> params;
+        if (auto aligned = onKdTreeLines(e, curves, edge))
+            params = std::move(*aligned);
+        else
+            params = discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
+        return mergeChords(curves, params, edge.lineApproximation, edge.lineSimplification);
     };
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1)

@@ -139,4 +139,20 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
     return simplified;
 }
 
+std::vector<double> mergeChords(const std::vector<CurveOnSurface>& uses,
+                                const std::vector<double>& params, double approximation,
+                                double simplification) {
+    if (params.size() < 3) return params;
+    std::vector<CurvePoints> curves = pointsOf(uses);
+    const double bound = approximation + std::max(0.0, simplification);
+    std::vector<double> merged{params.front()};
+    for (size_t i = 0; i + 1 < params.size();) {
+        size_t j = i + 1;
+        while (j + 1 < params.size() && flatEnough(curves, params[i], params[j + 1], bound)) ++j;
+        merged.push_back(params[j]);
+        i = j;
+    }
+    return merged;
+}
+
 }  // namespace nurbslod

@@ -27,4 +27,13 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
 std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurface>& uses,
                                                   double approximation, double simplification);
 
+// The points of `params` (increasing, 0 and 1 included) that a greedy walk keeps: from each
+// kept point, the farthest later one whose chord is within the same bound as above
+// (`approximation` + `simplification`, every face's curve). Fewer points than the midpoint
+// subdivision and simplification left, at about their cost (one chord bound per point), and
+// only points they chose.
+std::vector<double> mergeChords(const std::vector<CurveOnSurface>& uses,
+                                const std::vector<double>& params, double approximation,
+                                double simplification);
+
 }  // namespace nurbslod
