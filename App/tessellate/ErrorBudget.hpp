@@ -68,7 +68,7 @@ namespace nurbslod {
 //
 // The other way, a face whose edges' faces all meet closer than the fixed share gap (measured
 // at the same samples and at its vertices, then checked at every point of its edges) narrows
-// its gap to what they need, at least 0.02 T, and gives the half gap it frees to its surface
+// its gap to what they need, at least 0.005 T, and gives the half gap it frees to its surface
 // and trimming shares (withNarrowerShareGap). The sum is unchanged again.
 struct ErrorBudget {
     double surface = 0;

@@ -120,7 +120,7 @@ void expectNarrowGapsSaveTriangles(const TopoDS_Shape& shape, double t) {
     EXPECT_LT(narrow.mesh.triangles.size(), fixed.mesh.triangles.size());
 }
 
-// A filleted box: every edge exact, so every face narrows its gap to the floor (0.02 T).
+// A filleted box: every edge exact, so every face narrows its gap to the floor (0.005 T).
 TEST(ShareGap, ExactEdgesSpendTheirGapOnSurfaceAndChords) {
     const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
     BRepFilletAPI_MakeFillet fillet(box);
