@@ -34,13 +34,29 @@ double sum(const ErrorBudget& b) {
     return b.surface + b.trimming() + 0.5 * b.shareGap;
 }
 
+// The budgets the gap is moved in and out of: the fixed split, and a plane's.
+std::array<ErrorBudget, 2> fixedAndPlane(double t) {
+    return {ErrorBudget::of(t, ErrorMode::Guaranteed),
+            ErrorBudget::forFace(t, ErrorMode::Guaranteed, 0.0)};
+}
+
+// How many triangles use each edge of the mesh.
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edgeUses(const Mesh& mesh) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    return uses;
+}
+
 // Widening the gap moves tolerance between the shares and never adds to their sum; the floors
 // (half of the fixed split's surface and trimming shares) bound the gap a face can take.
 TEST(ShareGap, WiderGapComesOutOfTheOtherShares) {
     const double t = 1.0;
     const auto mode = ErrorMode::Guaranteed;
-    const ErrorBudget fixed = ErrorBudget::of(t, mode);
-    const ErrorBudget plane = ErrorBudget::forFace(t, mode, 0.0);
+    const auto [fixed, plane] = fixedAndPlane(t);
     for (const ErrorBudget& face : {fixed, plane}) {
         const double largest = face.largestShareGap(t, mode);
         EXPECT_GT(largest, 2 * 0.34 * t);  // bug33398.step's edge 762 at relative 1e-4
@@ -70,9 +86,7 @@ TEST(ShareGap, WiderGapComesOutOfTheOtherShares) {
 TEST(ShareGap, NarrowerGapGoesToTheOtherSharesInProportion) {
     const double t = 1.0;
     const auto mode = ErrorMode::Guaranteed;
-    const ErrorBudget fixed = ErrorBudget::of(t, mode);
-    const ErrorBudget plane = ErrorBudget::forFace(t, mode, 0.0);
-    for (const ErrorBudget& face : {fixed, plane}) {
+    for (const ErrorBudget& face : fixedAndPlane(t)) {
         const ErrorBudget narrow = face.withNarrowerShareGap(0.02 * t, mode);
         EXPECT_NEAR(sum(narrow), sum(face), 1e-12);
         EXPECT_EQ(narrow.shareGap, 0.02 * t);
@@ -92,12 +106,7 @@ TEST(ShareGap, NarrowerGapGoesToTheOtherSharesInProportion) {
 }
 
 std::size_t openEdges(const Mesh& mesh) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            ++uses[{std::min(a, b), std::max(a, b)}];
-        }
+    const auto uses = edgeUses(mesh);
     return std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; });
 }
 
@@ -171,14 +180,8 @@ bool overArc(const Point3& p) {
 }
 
 std::size_t openEdgesOnSharedEdge(const Mesh& mesh) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            ++uses[{std::min(a, b), std::max(a, b)}];
-        }
     std::size_t open = 0;
-    for (const auto& [edge, count] : uses)
+    for (const auto& [edge, count] : edgeUses(mesh))
         if (count == 1 && overArc(mesh.positions[edge.first]) &&
             overArc(mesh.positions[edge.second]))
             ++open;
