@@ -475,8 +475,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // 1a. A narrowed gap is checked at its edges' own points: where the faces' points of one are
     // farther apart than it (between the samples above), the faces of that edge take their
     // gap back (the fixed split, or what the face had before narrowing) and their edges are
-    // discretised again with it. hammer.iges at relative 1e-4 had one point 0.06 T apart on an
-    // edge narrowed to 0.04 T: an open crack.
+    // discretised again with it. hammer.iges at relative 1e-4 had a point 0.06 T apart, farther
+    // than its edge's samples had measured: an open crack.
     if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
         std::vector<char> tooNarrow(model.edges.size(), 0);
         tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
