@@ -313,6 +313,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (const auto& [face, p] : list) narrowGap[face] = std::max(narrowGap[face], need);
         }
     }
+    // An edge's share gap is at most each of its faces' (every face's sum must hold): `gap`
+    // held to the smallest of its faces' share gaps.
+    auto holdEdgeGapToFaces = [&](size_t e, double gap) {
+        for (const auto& u : uses[e]) gap = std::min(gap, faceBudgets[u.face].shareGap);
+        edgeShareGap[e] = gap;
+    };
     // a face's budget after a change of its other shares: its share gap kept where it can be,
     // and its edges' gaps held to what it keeps
     auto rebudget = [&](int f, const ErrorBudget& base) {
@@ -321,8 +327,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const auto& face = model.faces[f];
         for (const auto& loop : face.loops)
             for (const auto& curve : loop.curves)
-                edgeShareGap[curve.edge] =
-                    std::min(edgeShareGap[curve.edge], faceBudgets[f].shareGap);
+                holdEdgeGapToFaces(curve.edge, edgeShareGap[curve.edge]);
     };
 
     // The use of an edge whose chords its face's cells bound (a curve straight in (u, v), see
@@ -383,14 +388,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // (ErrorBudget::withNarrowerShareGap) and its edges' gaps follow: a shared point found
     // farther off stays one per face. Not a face with a free edge: the removal of the points
     // that cell sides leave on its free chords spends its half gap too (withFreeEdges).
+    // The budgets and edge gaps before narrowing are kept for the faces that take their gap
+    // back in step 1a (an edge widened above the fixed gap keeps its width there).
     const std::vector<ErrorBudget> unnarrowed = faceBudgets;
+    const std::vector<double> unnarrowedEdgeGap = edgeShareGap;
     if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
         for (int f = 0; f < faceCount; ++f)
             if (failure[f].empty() && !hasFreeEdge(f))
                 faceBudgets[f] = faceBudgets[f].withNarrowerShareGap(narrowGap[f], options.mode);
-        for (size_t e = 0; e < model.edges.size(); ++e)
-            for (const auto& u : uses[e])
-                edgeShareGap[e] = std::min(edgeShareGap[e], faceBudgets[u.face].shareGap);
+        for (size_t e = 0; e < model.edges.size(); ++e) holdEdgeGapToFaces(e, edgeShareGap[e]);
     }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
     // sum must hold), leaving out the use whose cells bound its chords and the faces whose
@@ -501,11 +507,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (const auto& loop : model.faces[f].loops)
                 for (const auto& curve : loop.curves) again.insert(curve.edge);
         }
-        for (const int e : again) {
-            edgeShareGap[e] = budget.shareGap;
-            for (const auto& u : uses[e])
-                edgeShareGap[e] = std::min(edgeShareGap[e], faceBudgets[u.face].shareGap);
-        }
+        for (const int e : again) holdEdgeGapToFaces(e, unnarrowedEdgeGap[e]);
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
