@@ -47,9 +47,13 @@ const Eigen::MatrixXd& interpolationMatrix(int n) {
     return matrices[n];
 }
 
-Point3 bezierPoint(const std::vector<Point3>& control, double t) {
-    std::vector<Point3> work = control;
-    const int n = static_cast<int>(work.size()) - 1;
+// A Bezier curve's control points, at most kMaxChordDegree + 1, held in place: chordBound runs
+// for every piece that the edges' subdivision tries, and heap vectors there were a fifth of its
+// time.
+using ControlPoints = std::array<Point3, kMaxChordDegree + 1>;
+
+Point3 bezierPoint(const ControlPoints& control, int n, double t) {
+    ControlPoints work = control;
     for (int level = 1; level <= n; ++level)
         for (int i = 0; i <= n - level; ++i) work[i] = (1 - t) * work[i] + t * work[i + 1];
     return work[0];
@@ -65,23 +69,23 @@ ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
 ChordBound chordBound(CurvePoints& curve, double s0, double s1) {
     const int n = std::clamp(curve.curve().bezierDegree(), 1, kMaxChordDegree);
     const Eigen::MatrixXd& inverse = interpolationMatrix(n);
-    Eigen::MatrixXd samples(n + 1, 3);
-    for (int i = 0; i <= n; ++i) {
-        const Point3 p = curve(s0 + (s1 - s0) * i / n);
-        samples.row(i) = p.transpose();
-    }
-    const Eigen::MatrixXd controlMatrix = inverse * samples;
-    std::vector<Point3> control(n + 1);
-    for (int i = 0; i <= n; ++i) control[i] = controlMatrix.row(i).transpose();
+    ControlPoints samples;
+    for (int i = 0; i <= n; ++i) samples[i] = curve(s0 + (s1 - s0) * i / n);
     // the interpolant passes through the samples, so the end points are exact
-    control.front() = samples.row(0).transpose();
-    control.back() = samples.row(n).transpose();
+    ControlPoints control;
+    control[0] = samples[0];
+    control[n] = samples[n];
+    for (int i = 1; i < n; ++i) {
+        Point3 sum = Point3::Zero();
+        for (int j = 0; j <= n; ++j) sum += inverse(i, j) * samples[j];
+        control[i] = sum;
+    }
 
     ChordBound result;
     for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
         const Point3 exact = curve(s0 + (s1 - s0) * t);
-        result.residual = std::max(result.residual, (exact - bezierPoint(control, t)).norm());
+        result.residual = std::max(result.residual, (exact - bezierPoint(control, n, t)).norm());
     }
     // The control net of the whole piece stands up to about twice as far from the chord as the
     // curve does (a parabola's middle control point); split into quarters by de Casteljau, each
@@ -89,15 +93,14 @@ ChordBound chordBound(CurvePoints& curve, double s0, double s1) {
     // curve 16 times closer. The distance to the chord is convex, so the largest over the
     // quarters' points bounds the curve (for a parabola: its sagitta exactly).
     double hull = 0;
-    const Point3 &chordStart = control.front(), chordEnd = control.back();
-    std::vector<Point3> rest = control;
+    const Point3 chordStart = control[0], chordEnd = control[n];
+    ControlPoints rest = control;
     for (int quarter = 0; quarter < 4; ++quarter) {
-        std::vector<Point3> piece;
+        ControlPoints piece;
         if (quarter < 3) {
             // split the rest at the parameter where the next quarter ends
             const double t = 1.0 / (4 - quarter);
-            std::vector<Point3> work = rest, right(n + 1);
-            piece.resize(n + 1);
+            ControlPoints work = rest, right;
             for (int level = 0; level <= n; ++level) {
                 piece[level] = work[0];
                 right[n - level] = work[n - level];
@@ -107,8 +110,8 @@ ChordBound chordBound(CurvePoints& curve, double s0, double s1) {
         } else {
             piece = rest;
         }
-        for (const Point3& p : piece)
-            hull = std::max(hull, distanceToSegment(p, chordStart, chordEnd));
+        for (int i = 0; i <= n; ++i)
+            hull = std::max(hull, distanceToSegment(piece[i], chordStart, chordEnd));
     }
     result.bound = hull + result.residual;
     return result;

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <unordered_map>
 
 #include "geometry/BSplineCurve2d.hpp"
@@ -77,9 +79,20 @@ public:
     }
 
 private:
+    // A parameter's bits, mixed (the standard library hashes a double byte by byte, a tenth of
+    // the edges' subdivision time); 0 and -0, which compare equal, hash alike.
+    struct ParameterHash {
+        std::size_t operator()(double s) const noexcept {
+            std::uint64_t bits = std::bit_cast<std::uint64_t>(s == 0 ? 0.0 : s);
+            bits ^= bits >> 33;
+            bits *= 0xff51afd7ed558ccdULL;
+            bits ^= bits >> 33;
+            return static_cast<std::size_t>(bits);
+        }
+    };
     const CurveOnSurface* curve_;
     std::size_t* evaluations_;
-    std::unordered_map<double, Point3> points_;
+    std::unordered_map<double, Point3, ParameterHash> points_;
 };
 ChordBound chordBound(CurvePoints& points, double s0, double s1);
 
