@@ -145,6 +145,8 @@ std::pair<double, double> segmentDistance(const IntPoint& p, const IntPoint& a, 
 struct FaceTessellator::Frame {
     double u0 = 0, v0 = 0, scaleU = 1, scaleV = 1;
     std::vector<cInt> breaksX, breaksY;  // Bezier span borders strictly inside the frame
+    // the even columns along u and v (CellChoices::evenColumns), where their frame is this one
+    std::array<const KdTreeGrid*, 2> even{nullptr, nullptr};
 
     IntPoint toInteger(const Point2& uv) const {
         return {static_cast<cInt>(std::llround((uv.x() - u0) * scaleU)),
@@ -286,6 +288,18 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
         const cInt y = frame_->toInteger({u0, b}).Y;
         if (y > 0 && y < kScale) frame_->breaksY.push_back(y);
     }
+    if (choices_.evenColumns)
+        for (int axis = 0; axis < 2; ++axis) {
+            const KdTreeGrid& grid = (*choices_.evenColumns)[axis];
+            const std::vector<cInt>& breaks = axis == 0 ? frame_->breaksX : frame_->breaksY;
+            const std::vector<std::int64_t> intervals = grid.intervals();
+            const bool sameFrame = grid.low() == (axis == 0 ? u0 : v0) &&
+                                   grid.scale() == (axis == 0 ? frame_->scaleU : frame_->scaleV) &&
+                                   std::equal(breaks.begin(), breaks.end(), intervals.begin() + 1,
+                                              intervals.end() - 1);
+            if (grid.hasEvenColumns() && sameFrame && intervals.size() == breaks.size() + 2)
+                frame_->even[axis] = &grid;
+        }
 }
 
 std::vector<std::vector<IntPoint>> FaceTessellator::integerBoundary(
@@ -431,8 +445,13 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         int direction = bound.splitDirection;
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
-        const cInt at =
-            std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)), lo + 1, hi - 1);
+        // on the even columns' middle line where the cell holds two or more (the lines its
+        // edges' points were put on), else where the bound says
+        std::optional<std::int64_t> even;
+        if (const KdTreeGrid* grid = frame_->even[direction]) even = grid->evenSplit(lo, hi);
+        const cInt at = even ? static_cast<cInt>(*even)
+                             : std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)),
+                                                lo + 1, hi - 1);
         split(direction, node.full || !choices_.splitThroughBoundaryPoints
                              ? at
                              : throughBoundaryPoint(*node.region, r, direction, at));

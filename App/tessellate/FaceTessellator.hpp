@@ -1,7 +1,9 @@
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <polyclipping/clipper.hpp>
 #include <stdexcept>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceBoundary.hpp"
 #include "tessellate/FaceMesh.hpp"
+#include "tessellate/KdTreeGrid.hpp"
 #include "trim/TrimmedSurface.hpp"
 
 namespace nurbslod {
@@ -30,6 +33,9 @@ struct CellChoices {
     // (removeOpenBoundaryPoints), and larger cells change them more (wing.brep at relative
     // 1e-4: 166 open edges instead of 98, BRepMesh 100).
     bool filledCellsBySides = true;
+    // The face's kd-tree lines with even columns (KdTreeGrid::setEvenColumns), as its edges were
+    // discretised on them; used where their frame is this face's.
+    std::optional<std::array<KdTreeGrid, 2>> evenColumns;
 };
 
 // Tessellates one trimmed face (paper sections 5.2 to 8): a kd-tree over the bounding box of

@@ -92,7 +92,8 @@ std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     };
     std::vector<double> bordersFirst =
         discretizeEdge(uses, approximation, simplification, halvingOn(curve, grid, axis));
-    if (!grid.hasBorders()) return bordersFirst;  // the same lines either way
+    // the same lines either way; even columns are cut on the borders' intervals only
+    if (!grid.hasBorders() || grid.hasEvenColumns()) return bordersFirst;
     std::vector<double> halvings = discretizeEdge(uses, approximation, simplification,
                                                   halvingOn(curve, grid.halvingsOnly(), axis));
     return withBorders(halvings) < withBorders(bordersFirst) ? halvings : bordersFirst;

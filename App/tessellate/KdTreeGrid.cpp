@@ -34,8 +34,60 @@ std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
     // the span around the window, halved as the kd-tree halves a cell (FaceTessellator: the
     // split at 0.5 rounded to a step, kept off the cell's sides)
     const auto after = std::lower_bound(breaks_.begin(), breaks_.end(), hi);
-    return halvingWithin(after == breaks_.begin() ? 0 : *(after - 1),
-                         after == breaks_.end() ? kKdTreeFrameScale : *after, lo, hi);
+    const std::int64_t a = after == breaks_.begin() ? 0 : *(after - 1);
+    const std::int64_t b = after == breaks_.end() ? kKdTreeFrameScale : *after;
+    if (hasEvenColumns()) {
+        const int k = counts_[static_cast<std::size_t>(after - breaks_.begin())];
+        if (k >= 2) return evenLineWithin(a, b, k, lo, hi);
+    }
+    return halvingWithin(a, b, lo, hi);
+}
+
+std::optional<double> KdTreeGrid::evenLineWithin(std::int64_t a, std::int64_t b, int k,
+                                                 std::int64_t lo, std::int64_t hi) const {
+    // as FaceTessellator splits: the middle column line while a cell holds two columns or more,
+    // then the column's halvings
+    int first = 0, last = k;
+    while (last - first >= 2) {
+        const int middle = (first + last) / 2;
+        const std::int64_t x = columnLine(a, b, k, middle);
+        if (x >= lo && x <= hi) return parameterOf(x);
+        if (x < lo)
+            first = middle;
+        else
+            last = middle;
+    }
+    return halvingWithin(columnLine(a, b, k, first), columnLine(a, b, k, last), lo, hi);
+}
+
+void KdTreeGrid::setEvenColumns(std::vector<int> counts) {
+    const bool any = std::any_of(counts.begin(), counts.end(), [](int k) { return k >= 2; });
+    if (!any || counts.size() != breaks_.size() + 1) counts.clear();
+    counts_ = std::move(counts);
+}
+
+std::vector<std::int64_t> KdTreeGrid::intervals() const {
+    std::vector<std::int64_t> borders{0};
+    borders.insert(borders.end(), breaks_.begin(), breaks_.end());
+    borders.push_back(kKdTreeFrameScale);
+    return borders;
+}
+
+std::optional<std::int64_t> KdTreeGrid::evenSplit(std::int64_t x0, std::int64_t x1) const {
+    if (!hasEvenColumns() || x1 - x0 < 2) return std::nullopt;
+    const auto after = std::lower_bound(breaks_.begin(), breaks_.end(), x1);
+    const std::int64_t a = after == breaks_.begin() ? 0 : *(after - 1);
+    const std::int64_t b = after == breaks_.end() ? kKdTreeFrameScale : *after;
+    const int k = counts_[static_cast<std::size_t>(after - breaks_.begin())];
+    if (k < 2 || x0 < a || x1 > b) return std::nullopt;
+    auto indexOf = [&](std::int64_t x) -> std::optional<int> {
+        const auto c = static_cast<int>(std::llround(double(x - a) * k / double(b - a)));
+        if (c < 0 || c > k || columnLine(a, b, k, c) != x) return std::nullopt;
+        return c;
+    };
+    const auto c0 = indexOf(x0), c1 = indexOf(x1);
+    if (!c0 || !c1 || *c1 - *c0 < 2) return std::nullopt;
+    return columnLine(a, b, k, (*c0 + *c1) / 2);
 }
 
 std::optional<double> KdTreeGrid::halvingWithin(std::int64_t a, std::int64_t b, std::int64_t lo,

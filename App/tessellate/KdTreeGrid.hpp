@@ -41,6 +41,28 @@ public:
     // on none of them: the points the kd-tree's first cuts add to a curve with those points.
     std::size_t bordersBetween(const std::vector<double>& values) const;
 
+    // Even columns: the kd-tree may cut an interval between span borders into k equal columns
+    // rather than halve it (a half cylinder whose bound allows 47 columns gets 47, not 64). It
+    // then splits a cell of several columns at the column line in its middle, by count, and a
+    // single column in halves. counts[i] is the number of columns of interval i (intervals()),
+    // 0 for halvings.
+    void setEvenColumns(std::vector<int> counts);
+    bool hasEvenColumns() const { return !counts_.empty(); }
+    // The borders of the intervals, in frame steps: 0, the span borders, kKdTreeFrameScale.
+    std::vector<std::int64_t> intervals() const;
+    // Line c of an interval [a, b] of k even columns, in frame steps.
+    static std::int64_t columnLine(std::int64_t a, std::int64_t b, int k, int c) {
+        return a + std::llround(double(b - a) * c / k);
+    }
+    // Where the kd-tree cuts a cell [x0, x1] (frame steps) that lies in one interval of even
+    // columns with both sides on its column lines and at least two columns wide: the column
+    // line in its middle. None otherwise (the cell is halved).
+    std::optional<std::int64_t> evenSplit(std::int64_t x0, std::int64_t x1) const;
+
+    double low() const { return low_; }
+    double scale() const { return scale_; }
+    double parameterAt(std::int64_t step) const { return parameterOf(step); }
+
 private:
     // the first halving of [a, b] (frame steps) that lands in [lo, hi], halving towards it
     std::optional<double> halvingWithin(std::int64_t a, std::int64_t b, std::int64_t lo,
@@ -51,7 +73,12 @@ private:
 
     double low_ = 0, scale_ = 1;
     bool bordersFirst_ = true;
+    // the coarsest line of the even columns of [a, b] that lands in [lo, hi] (frame steps)
+    std::optional<double> evenLineWithin(std::int64_t a, std::int64_t b, int k, std::int64_t lo,
+                                         std::int64_t hi) const;
+
     std::vector<std::int64_t> breaks_;  // span borders strictly inside, in frame steps, sorted
+    std::vector<int> counts_;           // even columns per interval, empty: none
 };
 
 }  // namespace nurbslod

@@ -33,6 +33,9 @@ struct TessellationOptions {
     // on it and gives the rest to its surface and chords (ErrorBudget::withNarrowerShareGap).
     // Off only to measure what that saves.
     bool narrowShareGaps = true;
+    // A face whose region is its whole frame box cuts its spans into the fewest equal columns
+    // that meet the bound, not into a power of two (chooseEvenColumns). Off only to measure.
+    bool evenColumns = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
