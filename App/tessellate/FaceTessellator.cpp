@@ -145,8 +145,8 @@ std::pair<double, double> segmentDistance(const IntPoint& p, const IntPoint& a, 
 struct FaceTessellator::Frame {
     double u0 = 0, v0 = 0, scaleU = 1, scaleV = 1;
     std::vector<cInt> breaksX, breaksY;  // Bezier span borders strictly inside the frame
-    // the even columns along u and v (CellChoices::evenColumns), where their frame is this one
-    std::array<const KdTreeGrid*, 2> even{nullptr, nullptr};
+    // whether the even columns along u and v (CellChoices::evenColumns) are on this frame
+    std::array<bool, 2> even{false, false};
 
     IntPoint toInteger(const Point2& uv) const {
         return {static_cast<cInt>(std::llround((uv.x() - u0) * scaleU)),
@@ -298,7 +298,7 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
                                    std::equal(breaks.begin(), breaks.end(), intervals.begin() + 1,
                                               intervals.end() - 1);
             if (grid.hasEvenColumns() && sameFrame && intervals.size() == breaks.size() + 2)
-                frame_->even[axis] = &grid;
+                frame_->even[axis] = true;
         }
 }
 
@@ -448,7 +448,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         // on the even columns' middle line where the cell holds two or more (the lines its
         // edges' points were put on), else where the bound says
         std::optional<std::int64_t> even;
-        if (const KdTreeGrid* grid = frame_->even[direction]) even = grid->evenSplit(lo, hi);
+        if (frame_->even[direction]) even = (*choices_.evenColumns)[direction].evenSplit(lo, hi);
         const cInt at = even ? static_cast<cInt>(*even)
                              : std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)),
                                                 lo + 1, hi - 1);
