@@ -15,8 +15,8 @@ namespace {
 // At most this many columns a span: beyond, halving is as good.
 constexpr int kMostColumns = 64;
 
-// Every trimming curve straight in (u, v) and on one side of the frame's box: the region is the
-// box, and the kd-tree's cells are all full or filled to their sides.
+}  // namespace
+
 bool regionIsTheBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids) {
     double low[2], high[2];
     for (int axis = 0; axis < 2; ++axis) {
@@ -40,73 +40,82 @@ bool regionIsTheBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>&
     return true;
 }
 
-}  // namespace
-
-bool chooseEvenColumns(const TrimmedSurface& face, std::array<KdTreeGrid, 2>& grids, double target,
-                       ErrorMode mode, bool flatCellsByDistance, std::array<bool, 2> axes) {
-    if (!(target > 0) || !(axes[0] || axes[1]) || !regionIsTheBox(face, grids)) return false;
+std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids,
+                                 int axis, double target, ErrorMode mode,
+                                 bool flatCellsByDistance) {
+    const KdTreeGrid& grid = grids[axis];
+    const KdTreeGrid& other = grids[1 - axis];
+    const std::vector<std::int64_t> intervals = grid.intervals();
+    const std::vector<std::int64_t> across = other.intervals();
+    std::vector<int> needs(intervals.size() - 1, 0);
+    if (!(target > 0)) return needs;
     const BezierPatchGrid patches(face.surface);
-    bool any = false;
-    for (int axis = 0; axis < 2; ++axis) {
-        if (!axes[axis]) continue;
-        const KdTreeGrid& grid = grids[axis];
-        const KdTreeGrid& other = grids[1 - axis];
-        const std::vector<std::int64_t> intervals = grid.intervals();
-        const std::vector<std::int64_t> across = other.intervals();
-        // the largest measure of the cells [column c of k] x [each span across], as the kd-tree
-        // bounds a cell the region fills to its sides
-        auto largestMeasure = [&](std::int64_t a, std::int64_t b, int k, int c) {
-            double largest = 0;
-            const double c0 = grid.parameterAt(KdTreeGrid::columnLine(a, b, k, c));
-            const double c1 = grid.parameterAt(KdTreeGrid::columnLine(a, b, k, c + 1));
-            for (std::size_t j = 0; j + 1 < across.size(); ++j) {
-                const double o0 = other.parameterAt(across[j]);
-                const double o1 = other.parameterAt(across[j + 1]);
-                const double u0 = axis == 0 ? c0 : o0, u1 = axis == 0 ? c1 : o1;
-                const double v0 = axis == 0 ? o0 : c0, v1 = axis == 0 ? o1 : c1;
-                const BezierPatch piece =
-                    patches.piece(patches.spanIndexU(0.5 * (u0 + u1)),
-                                  patches.spanIndexV(0.5 * (v0 + v1)), u0, u1, v0, v1);
-                const CellErrorBound bound =
-                    cellErrorBound(piece, mode, target, false, flatCellsByDistance);
-                largest = std::max(largest, bound.measure(mode, false));
-            }
-            return largest;
+    // whether the cell [c0, c1] x [o0, o1] (along and across the axis) meets the target
+    auto settles = [&](double c0, double c1, double o0, double o1) {
+        const double u0 = axis == 0 ? c0 : o0, u1 = axis == 0 ? c1 : o1;
+        const double v0 = axis == 0 ? o0 : c0, v1 = axis == 0 ? o1 : c1;
+        const BezierPatch piece =
+            patches.piece(patches.spanIndexU(0.5 * (u0 + u1)), patches.spanIndexV(0.5 * (v0 + v1)),
+                          u0, u1, v0, v1);
+        return cellErrorBound(piece, mode, target, false, flatCellsByDistance)
+                   .measure(mode, false) <= target;
+    };
+    auto columnSettles = [&](std::int64_t a, std::int64_t b, int k, int c) {
+        const double c0 = grid.parameterAt(KdTreeGrid::columnLine(a, b, k, c));
+        const double c1 = grid.parameterAt(KdTreeGrid::columnLine(a, b, k, c + 1));
+        for (std::size_t j = 0; j + 1 < across.size(); ++j)
+            if (!settles(c0, c1, other.parameterAt(across[j]), other.parameterAt(across[j + 1])))
+                return false;
+        return true;
+    };
+    for (std::size_t i = 0; i + 1 < intervals.size(); ++i) {
+        const std::int64_t a = intervals[i], b = intervals[i + 1];
+        if (columnSettles(a, b, 1, 0)) {
+            needs[i] = 1;
+            continue;
+        }
+        // The columns of a surface of revolution differ only as its arcs' parameter runs
+        // unevenly: the search tries the first, middle and last, and the count found is then
+        // checked on every column (one more at a time where one fails).
+        auto likelyMeets = [&](int k) {
+            for (int c : {0, k / 2, k - 1})
+                if (!columnSettles(a, b, k, c)) return false;
+            return true;
         };
-        std::vector<int> counts(intervals.size() - 1, 0);
-        for (std::size_t i = 0; i + 1 < intervals.size(); ++i) {
-            const std::int64_t a = intervals[i], b = intervals[i + 1];
-            const double whole = largestMeasure(a, b, 1, 0);
-            if (!(whole > target) || !std::isfinite(whole)) continue;  // no cut, or no bound
-            auto meets = [&](int k) {
-                for (int c = 0; c < k; ++c)
-                    if (!(largestMeasure(a, b, k, c) <= target)) return false;
-                return true;
-            };
-            // From an estimate (a bulge falls with the square of the width; the bound of a wide
-            // cell is looser, so it may be high or low), up by quarters until a count meets the
-            // target, then the fewest between the last that did not and it.
-            int fails = 1;
-            int count =
-                std::clamp(static_cast<int>(std::ceil(std::sqrt(whole / target))), 2, kMostColumns);
-            while (!meets(count)) {
-                fails = count;
-                if (count == kMostColumns) break;
-                count = std::min(kMostColumns, count + std::max(1, count / 4));
-            }
-            if (fails == count) continue;  // not even the most columns: halvings
-            while (count - fails > 1) {
-                const int middle = (fails + count) / 2;
-                (meets(middle) ? count : fails) = middle;
-            }
-            counts[i] = count;
+        // the bound falls about with the square of a column's width
+        const CellErrorBound whole = [&] {
+            const double c0 = grid.parameterAt(a), c1 = grid.parameterAt(b);
+            const double o0 = other.parameterAt(across.front()), o1 = other.parameterAt(across[1]);
+            const double u0 = axis == 0 ? c0 : o0, u1 = axis == 0 ? c1 : o1;
+            const double v0 = axis == 0 ? o0 : c0, v1 = axis == 0 ? o1 : c1;
+            return cellErrorBound(
+                patches.piece(patches.spanIndexU(0.5 * (u0 + u1)),
+                              patches.spanIndexV(0.5 * (v0 + v1)), u0, u1, v0, v1),
+                mode, target, false, flatCellsByDistance);
+        }();
+        const double ratio = whole.measure(mode, false) / target;
+        int fails = 1;
+        int count = std::isfinite(ratio)
+                        ? std::clamp(static_cast<int>(std::ceil(std::sqrt(ratio))), 2, kMostColumns)
+                        : 2;
+        while (!likelyMeets(count)) {
+            fails = count;
+            if (count == kMostColumns) break;
+            count = std::min(kMostColumns, count + std::max(1, count / 4));
         }
-        if (std::any_of(counts.begin(), counts.end(), [](int k) { return k >= 2; })) {
-            grids[axis].setEvenColumns(counts);
-            any = true;
+        if (fails == count) continue;  // not even the most columns: halvings
+        while (count - fails > 1) {
+            const int middle = (fails + count) / 2;
+            (likelyMeets(middle) ? count : fails) = middle;
         }
+        for (; count <= kMostColumns; ++count) {
+            bool all = true;
+            for (int c = 0; c < count && all; ++c) all = columnSettles(a, b, count, c);
+            if (all) break;
+        }
+        if (count <= kMostColumns) needs[i] = count;
     }
-    return any;
+    return needs;
 }
 
 }  // namespace nurbslod

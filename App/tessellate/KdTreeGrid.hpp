@@ -59,6 +59,11 @@ public:
     // line in its middle. None otherwise (the cell is halved).
     std::optional<std::int64_t> evenSplit(std::int64_t x0, std::int64_t x1) const;
 
+    // The same frame and span borders as `other`: the same lines, and the same columns for the
+    // same counts.
+    bool sameFrame(const KdTreeGrid& other) const {
+        return low_ == other.low_ && scale_ == other.scale_ && breaks_ == other.breaks_;
+    }
     double low() const { return low_; }
     double scale() const { return scale_; }
     double parameterAt(std::int64_t step) const { return parameterOf(step); }

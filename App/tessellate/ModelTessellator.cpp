@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -423,37 +424,114 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     tbb::parallel_for(0, faceCount, [&](int f) {
         if (failure[f].empty()) faceGrids[f] = kdTreeGridsBeforeDiscretisation(model.faces[f]);
     });
-    // Even columns where a face's region is its whole frame box and its cells bound as filled
-    // to their sides (no free edge), for its surface share (again where step 1a or 1b changes
-    // it). Not along an axis where an edge of the face that runs along it is straight in the
-    // (u, v) of another of its faces too: that face's kd-tree cuts it on lines of its own
-    // (bottle.brep's cylinders, whose circles its tori share: 4,428 triangles at relative
-    // 1e-3 became 4,676 with even columns there).
+    // Even columns (evenColumnNeeds) where a face's region is its whole frame box and its
+    // cells bound as filled to their sides (no free edge). An edge that runs along an axis of
+    // such a face and is straight in another face's (u, v) is cut by that face's kd-tree too:
+    // the two axes take the same columns, the largest of their needs, on the same frame, or
+    // neither takes any (bottle.brep's cylinders alone, whose circles its tori share and cut on
+    // halvings of their own: 4,428 triangles at relative 1e-3 became 4,676). The axes so tied
+    // make one group (union-find over face * 2 + axis); its columns are chosen again where step
+    // 1a or 1b changes a member's surface share.
     std::vector<char> evenColumns(faceCount, 0);
-    auto chooseColumns = [&](int f) {
-        if (!options.evenColumns || hasFreeEdge(f)) return;
-        std::array<bool, 2> axes{true, true};
-        const auto& face = model.faces[f];
-        for (int l = 0; l < int(face.loops.size()); ++l)
-            for (int c = 0; c < int(face.loops[l].curves.size()); ++c) {
-                const int e = face.loops[l].curves[c].edge;
-                const CurveOnSurface curve = curveOnSurface({f, l, c});
-                const Point2 from = curve.uv(0), to = curve.uv(1);
-                for (const auto& u : uses[e]) {
-                    if (u.face == f && u.loop == l && u.curve == c) continue;
-                    if (!curveOnSurface(u).straightInParameterPlane()) continue;
-                    for (int axis = 0; axis < 2; ++axis)
-                        if (from[axis] != to[axis]) axes[axis] = false;
+    std::vector<int> columnGroup(2 * static_cast<size_t>(faceCount));
+    std::vector<char> columnsRuledOut(2 * static_cast<size_t>(faceCount), 1);
+    std::iota(columnGroup.begin(), columnGroup.end(), 0);
+    auto groupOf = [&](int node) {
+        while (columnGroup[node] != node) node = columnGroup[node] = columnGroup[columnGroup[node]];
+        return node;
+    };
+    std::vector<char> columnCandidate(faceCount, 0);
+    tbb::parallel_for(0, faceCount, [&](int f) {
+        columnCandidate[f] = options.evenColumns && failure[f].empty() && faceGrids[f] &&
+                             !hasFreeEdge(f) && regionIsTheBox(model.faces[f], *faceGrids[f]);
+    });
+    for (int f = 0; f < faceCount; ++f)
+        for (int axis = 0; axis < 2; ++axis) columnsRuledOut[2 * f + axis] = !columnCandidate[f];
+    // the axes along which a straight curve runs
+    auto axesAlong = [](const CurveOnSurface& curve) {
+        const Point2 from = curve.uv(0), to = curve.uv(1);
+        return std::array<bool, 2>{from.x() != to.x(), from.y() != to.y()};
+    };
+    for (size_t e = 0; e < model.edges.size(); ++e)
+        for (const auto& use : uses[e]) {
+            if (!columnCandidate[use.face]) continue;
+            const CurveOnSurface curve = curveOnSurface(use);
+            const auto along = axesAlong(curve);
+            for (const auto& other : uses[e]) {
+                if (other.face == use.face && other.loop == use.loop && other.curve == use.curve)
+                    continue;
+                const CurveOnSurface otherCurve = curveOnSurface(other);
+                if (!otherCurve.straightInParameterPlane()) continue;
+                const auto otherAlong = axesAlong(otherCurve);
+                for (int axis = 0; axis < 2; ++axis) {
+                    if (!along[axis]) continue;
+                    const int node = 2 * use.face + axis;
+                    for (int otherAxis = 0; otherAxis < 2; ++otherAxis) {
+                        if (!otherAlong[otherAxis]) continue;
+                        const int otherNode = 2 * other.face + otherAxis;
+                        // tied only where both run the edge on one frame at the same values
+                        bool same =
+                            columnCandidate[other.face] && (*faceGrids[use.face])[axis].sameFrame(
+                                                               (*faceGrids[other.face])[otherAxis]);
+                        for (const double t : {0.0, 0.5, 1.0})
+                            same =
+                                same && std::abs(curve.uv(t)[axis] - otherCurve.uv(t)[otherAxis]) <=
+                                            1e-9 / (*faceGrids[use.face])[axis].scale() *
+                                                double(kKdTreeFrameScale);
+                        if (!same) {
+                            columnsRuledOut[node] = columnsRuledOut[otherNode] = 1;
+                            continue;
+                        }
+                        columnGroup[groupOf(node)] = groupOf(otherNode);
+                    }
                 }
             }
-        faceGrids[f] = kdTreeGridsBeforeDiscretisation(face);
-        evenColumns[f] =
-            faceGrids[f] && chooseEvenColumns(face, *faceGrids[f], faceBudgets[f].surface,
-                                              options.mode, options.flatCellsByDistance, axes);
+        }
+    std::map<int, std::vector<int>> columnGroups;  // group -> its nodes
+    for (int node = 0; node < 2 * faceCount; ++node)
+        if (columnCandidate[node / 2]) columnGroups[groupOf(node)].push_back(node);
+    // A group's columns: the largest need of its members per interval, none where a member has
+    // no count. Returns its faces.
+    auto assignColumns = [&](const std::vector<int>& nodes) {
+        std::set<int> faces;
+        for (const int node : nodes) faces.insert(node / 2);
+        auto setCounts = [&](const std::vector<int>& counts) {
+            for (const int node : nodes) (*faceGrids[node / 2])[node % 2].setEvenColumns(counts);
+            for (const int f : faces)
+                evenColumns[f] =
+                    (*faceGrids[f])[0].hasEvenColumns() || (*faceGrids[f])[1].hasEvenColumns();
+        };
+        setCounts({});
+        if (std::any_of(nodes.begin(), nodes.end(),
+                        [&](int node) { return columnsRuledOut[node]; }))
+            return faces;
+        std::vector<std::vector<int>> needs(nodes.size());
+        tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
+            const int f = nodes[k] / 2;
+            needs[k] =
+                evenColumnNeeds(model.faces[f], *faceGrids[f], nodes[k] % 2, faceBudgets[f].surface,
+                                options.mode, options.flatCellsByDistance);
+        });
+        std::vector<int> counts = needs.front();
+        for (const auto& need : needs)
+            for (size_t i = 0; i < counts.size(); ++i)
+                counts[i] = need[i] == 0 || counts[i] == 0 ? 0 : std::max(counts[i], need[i]);
+        setCounts(counts);
+        return faces;
     };
-    tbb::parallel_for(0, faceCount, [&](int f) {
-        if (failure[f].empty()) chooseColumns(f);
-    });
+    for (const auto& [group, nodes] : columnGroups) assignColumns(nodes);
+    // the groups of faces whose surface share changed, their columns chosen again: their faces
+    auto reassignColumns = [&](const std::set<int>& changed) {
+        std::set<int> groups, faces;
+        for (const int f : changed)
+            for (int axis = 0; axis < 2; ++axis)
+                if (columnCandidate[f]) groups.insert(groupOf(2 * f + axis));
+        for (const int group : groups) {
+            const auto members = assignColumns(columnGroups.at(group));
+            faces.insert(members.begin(), members.end());
+        }
+        return faces;
+    };
     auto onKdTreeLines = [&](size_t e, const std::vector<CurveOnSurface>& curves,
                              const ErrorBudget& edge) -> std::optional<std::vector<double>> {
         std::vector<size_t> order;
@@ -534,12 +612,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (size_t e = 0; e < model.edges.size(); ++e)
             if (tooNarrow[e])
                 for (const auto& u : uses[e]) widened.insert(u.face);
-        for (const int f : widened) {
-            faceBudgets[f] = unnarrowed[f];
-            if (evenColumns[f]) chooseColumns(f);
+        for (const int f : widened) faceBudgets[f] = unnarrowed[f];
+        std::set<int> faces = reassignColumns(widened);
+        faces.insert(widened.begin(), widened.end());
+        for (const int f : faces)
             for (const auto& loop : model.faces[f].loops)
                 for (const auto& curve : loop.curves) again.insert(curve.edge);
-        }
         for (const int e : again) holdEdgeGapToFaces(e, unnarrowedEdgeGap[e]);
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
@@ -641,16 +719,18 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // strip away, and its neighbours' edges stay open. Such a face takes the fixed split back
     // and its edges are discretised again (their share is the smallest of their faces').
     for (int round = 0; round < 2; ++round) {
-        std::set<int> again;
+        std::set<int> again, changed;
         for (int f = 0; f < faceCount; ++f)
             if (failure[f].empty() && faceBudgets[f].trimming() > budget.trimming() &&
                 chordsCross(f)) {
                 rebudget(f, budget);
-                if (evenColumns[f]) chooseColumns(f);
-                const auto& face = model.faces[f];
-                for (const auto& loop : face.loops)
-                    for (const auto& curve : loop.curves) again.insert(curve.edge);
+                changed.insert(f);
             }
+        std::set<int> faces = reassignColumns(changed);
+        faces.insert(changed.begin(), changed.end());
+        for (const int f : faces)
+            for (const auto& loop : model.faces[f].loops)
+                for (const auto& curve : loop.curves) again.insert(curve.edge);
         if (again.empty()) break;
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
