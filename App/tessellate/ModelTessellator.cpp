@@ -508,9 +508,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::vector<std::vector<int>> needs(nodes.size());
         tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
-            needs[k] =
-                evenColumnNeeds(model.faces[f], *faceGrids[f], nodes[k] % 2, faceBudgets[f].surface,
-                                options.mode, options.flatCellsByDistance);
+            try {
+                needs[k] = evenColumnNeeds(model.faces[f], *faceGrids[f], nodes[k] % 2,
+                                           faceBudgets[f].surface, options.mode,
+                                           options.flatCellsByDistance);
+            } catch (const std::exception&) {
+                // no columns: the face's own tessellation then says what is wrong with it
+                needs[k].assign((*faceGrids[f])[nodes[k] % 2].intervals().size() - 1, 0);
+            }
         });
         std::vector<int> counts = needs.front();
         for (const auto& need : needs)
