@@ -50,15 +50,18 @@ std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<Kd
     std::vector<int> needs(intervals.size() - 1, 0);
     if (!(target > 0)) return needs;
     const BezierPatchGrid patches(face.surface);
-    // whether the cell [c0, c1] x [o0, o1] (along and across the axis) meets the target
-    auto settles = [&](double c0, double c1, double o0, double o1) {
+    // the kd-tree's bound of the cell [c0, c1] x [o0, o1] (along and across the axis), filled
+    // to its sides
+    auto cellBound = [&](double c0, double c1, double o0, double o1) {
         const double u0 = axis == 0 ? c0 : o0, u1 = axis == 0 ? c1 : o1;
         const double v0 = axis == 0 ? o0 : c0, v1 = axis == 0 ? o1 : c1;
         const BezierPatch piece =
             patches.piece(patches.spanIndexU(0.5 * (u0 + u1)), patches.spanIndexV(0.5 * (v0 + v1)),
                           u0, u1, v0, v1);
-        return cellErrorBound(piece, mode, target, false, flatCellsByDistance)
-                   .measure(mode, false) <= target;
+        return cellErrorBound(piece, mode, target, false, flatCellsByDistance).measure(mode, false);
+    };
+    auto settles = [&](double c0, double c1, double o0, double o1) {
+        return cellBound(c0, c1, o0, o1) <= target;
     };
     auto columnSettles = [&](std::int64_t a, std::int64_t b, int k, int c) {
         const double c0 = grid.parameterAt(KdTreeGrid::columnLine(a, b, k, c));
@@ -83,17 +86,9 @@ std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<Kd
             return true;
         };
         // the bound falls about with the square of a column's width
-        const CellErrorBound whole = [&] {
-            const double c0 = grid.parameterAt(a), c1 = grid.parameterAt(b);
-            const double o0 = other.parameterAt(across.front()), o1 = other.parameterAt(across[1]);
-            const double u0 = axis == 0 ? c0 : o0, u1 = axis == 0 ? c1 : o1;
-            const double v0 = axis == 0 ? o0 : c0, v1 = axis == 0 ? o1 : c1;
-            return cellErrorBound(
-                patches.piece(patches.spanIndexU(0.5 * (u0 + u1)),
-                              patches.spanIndexV(0.5 * (v0 + v1)), u0, u1, v0, v1),
-                mode, target, false, flatCellsByDistance);
-        }();
-        const double ratio = whole.measure(mode, false) / target;
+        const double ratio = cellBound(grid.parameterAt(a), grid.parameterAt(b),
+                                       other.parameterAt(across[0]), other.parameterAt(across[1])) /
+                             target;
         int fails = 1;
         int count = std::isfinite(ratio)
                         ? std::clamp(static_cast<int>(std::ceil(std::sqrt(ratio))), 2, kMostColumns)

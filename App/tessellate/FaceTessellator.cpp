@@ -288,18 +288,14 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
         const cInt y = frame_->toInteger({u0, b}).Y;
         if (y > 0 && y < kScale) frame_->breaksY.push_back(y);
     }
-    if (choices_.evenColumns)
+    if (choices_.evenColumns) {
+        const KdTreeGrid own[2] = {KdTreeGrid(u0, u1, patches_.breakpointsU()),
+                                   KdTreeGrid(v0, v1, patches_.breakpointsV())};
         for (int axis = 0; axis < 2; ++axis) {
             const KdTreeGrid& grid = (*choices_.evenColumns)[axis];
-            const std::vector<cInt>& breaks = axis == 0 ? frame_->breaksX : frame_->breaksY;
-            const std::vector<std::int64_t> intervals = grid.intervals();
-            const bool sameFrame = grid.low() == (axis == 0 ? u0 : v0) &&
-                                   grid.scale() == (axis == 0 ? frame_->scaleU : frame_->scaleV) &&
-                                   std::equal(breaks.begin(), breaks.end(), intervals.begin() + 1,
-                                              intervals.end() - 1);
-            if (grid.hasEvenColumns() && sameFrame && intervals.size() == breaks.size() + 2)
-                frame_->even[axis] = true;
+            frame_->even[axis] = grid.hasEvenColumns() && grid.sameFrame(own[axis]);
         }
+    }
 }
 
 std::vector<std::vector<IntPoint>> FaceTessellator::integerBoundary(

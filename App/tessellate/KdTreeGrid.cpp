@@ -33,14 +33,17 @@ std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
 
     // the span around the window, halved as the kd-tree halves a cell (FaceTessellator: the
     // split at 0.5 rounded to a step, kept off the cell's sides)
-    const auto after = std::lower_bound(breaks_.begin(), breaks_.end(), hi);
-    const std::int64_t a = after == breaks_.begin() ? 0 : *(after - 1);
-    const std::int64_t b = after == breaks_.end() ? kKdTreeFrameScale : *after;
-    if (hasEvenColumns()) {
-        const int k = counts_[static_cast<std::size_t>(after - breaks_.begin())];
-        if (k >= 2) return evenLineWithin(a, b, k, lo, hi);
-    }
+    const auto [a, b, index] = intervalAround(hi);
+    if (hasEvenColumns() && counts_[index] >= 2)
+        return evenLineWithin(a, b, counts_[index], lo, hi);
     return halvingWithin(a, b, lo, hi);
+}
+
+KdTreeGrid::Interval KdTreeGrid::intervalAround(std::int64_t x) const {
+    const auto after = std::lower_bound(breaks_.begin(), breaks_.end(), x);
+    return {after == breaks_.begin() ? 0 : *(after - 1),
+            after == breaks_.end() ? kKdTreeFrameScale : *after,
+            static_cast<std::size_t>(after - breaks_.begin())};
 }
 
 std::optional<double> KdTreeGrid::evenLineWithin(std::int64_t a, std::int64_t b, int k,
@@ -75,10 +78,8 @@ std::vector<std::int64_t> KdTreeGrid::intervals() const {
 
 std::optional<std::int64_t> KdTreeGrid::evenSplit(std::int64_t x0, std::int64_t x1) const {
     if (!hasEvenColumns() || x1 - x0 < 2) return std::nullopt;
-    const auto after = std::lower_bound(breaks_.begin(), breaks_.end(), x1);
-    const std::int64_t a = after == breaks_.begin() ? 0 : *(after - 1);
-    const std::int64_t b = after == breaks_.end() ? kKdTreeFrameScale : *after;
-    const int k = counts_[static_cast<std::size_t>(after - breaks_.begin())];
+    const auto [a, b, index] = intervalAround(x1);
+    const int k = counts_[index];
     if (k < 2 || x0 < a || x1 > b) return std::nullopt;
     auto indexOf = [&](std::int64_t x) -> std::optional<int> {
         const auto c = static_cast<int>(std::llround(double(x - a) * k / double(b - a)));

@@ -78,6 +78,13 @@ private:
 
     double low_ = 0, scale_ = 1;
     bool bordersFirst_ = true;
+    // The interval between span borders (or the frame's ends) that ends at or after x: its
+    // borders a, b and its index in intervals().
+    struct Interval {
+        std::int64_t a, b;
+        std::size_t index;
+    };
+    Interval intervalAround(std::int64_t x) const;
     // the coarsest line of the even columns of [a, b] that lands in [lo, hi] (frame steps)
     std::optional<double> evenLineWithin(std::int64_t a, std::int64_t b, int k, std::int64_t lo,
                                          std::int64_t hi) const;

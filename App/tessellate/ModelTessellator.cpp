@@ -432,9 +432,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // halvings of their own: 4,428 triangles at relative 1e-3 became 4,676). The axes so tied
     // make one group (union-find over face * 2 + axis); its columns are chosen again where step
     // 1a or 1b changes a member's surface share.
-    std::vector<char> evenColumns(faceCount, 0);
+    auto hasEvenColumns = [&](int f) {
+        return faceGrids[f] &&
+               ((*faceGrids[f])[0].hasEvenColumns() || (*faceGrids[f])[1].hasEvenColumns());
+    };
     std::vector<int> columnGroup(2 * static_cast<size_t>(faceCount));
-    std::vector<char> columnsRuledOut(2 * static_cast<size_t>(faceCount), 1);
+    std::vector<char> columnsRuledOut(2 * static_cast<size_t>(faceCount));
     std::iota(columnGroup.begin(), columnGroup.end(), 0);
     auto groupOf = [&](int node) {
         while (columnGroup[node] != node) node = columnGroup[node] = columnGroup[columnGroup[node]];
@@ -497,9 +500,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (const int node : nodes) faces.insert(node / 2);
         auto setCounts = [&](const std::vector<int>& counts) {
             for (const int node : nodes) (*faceGrids[node / 2])[node % 2].setEvenColumns(counts);
-            for (const int f : faces)
-                evenColumns[f] =
-                    (*faceGrids[f])[0].hasEvenColumns() || (*faceGrids[f])[1].hasEvenColumns();
         };
         setCounts({});
         if (std::any_of(nodes.begin(), nodes.end(),
@@ -525,9 +525,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return faces;
     };
     for (const auto& [group, nodes] : columnGroups) assignColumns(nodes);
-    // the groups of faces whose surface share changed, their columns chosen again: their faces
-    auto reassignColumns = [&](const std::set<int>& changed) {
-        std::set<int> groups, faces;
+    // After the surface shares of `changed` faces changed: their groups' columns chosen again,
+    // and the edges of those faces and of the groups' faces, to discretise again.
+    auto edgesAfterRebudget = [&](const std::set<int>& changed) {
+        std::set<int> groups, faces = changed, edges;
         for (const int f : changed)
             for (int axis = 0; axis < 2; ++axis)
                 if (columnCandidate[f]) groups.insert(groupOf(2 * f + axis));
@@ -535,7 +536,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             const auto members = assignColumns(columnGroups.at(group));
             faces.insert(members.begin(), members.end());
         }
-        return faces;
+        for (const int f : faces)
+            for (const auto& loop : model.faces[f].loops)
+                for (const auto& curve : loop.curves) edges.insert(curve.edge);
+        return edges;
     };
     auto onKdTreeLines = [&](size_t e, const std::vector<CurveOnSurface>& curves,
                              const ErrorBudget& edge) -> std::optional<std::vector<double>> {
@@ -613,16 +617,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 tooNarrow[e] = farthest(own, centroid(own)) > 0.5 * edgeShareGap[e];
             }
         });
-        std::set<int> widened, again;
+        std::set<int> widened;
         for (size_t e = 0; e < model.edges.size(); ++e)
             if (tooNarrow[e])
                 for (const auto& u : uses[e]) widened.insert(u.face);
         for (const int f : widened) faceBudgets[f] = unnarrowed[f];
-        std::set<int> faces = reassignColumns(widened);
-        faces.insert(widened.begin(), widened.end());
-        for (const int f : faces)
-            for (const auto& loop : model.faces[f].loops)
-                for (const auto& curve : loop.curves) again.insert(curve.edge);
+        const std::set<int> again = edgesAfterRebudget(widened);
         for (const int e : again) holdEdgeGapToFaces(e, unnarrowedEdgeGap[e]);
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
@@ -724,18 +724,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // strip away, and its neighbours' edges stay open. Such a face takes the fixed split back
     // and its edges are discretised again (their share is the smallest of their faces').
     for (int round = 0; round < 2; ++round) {
-        std::set<int> again, changed;
+        std::set<int> changed;
         for (int f = 0; f < faceCount; ++f)
             if (failure[f].empty() && faceBudgets[f].trimming() > budget.trimming() &&
                 chordsCross(f)) {
                 rebudget(f, budget);
                 changed.insert(f);
             }
-        std::set<int> faces = reassignColumns(changed);
-        faces.insert(changed.begin(), changed.end());
-        for (const int f : faces)
-            for (const auto& loop : model.faces[f].loops)
-                for (const auto& curve : loop.curves) again.insert(curve.edge);
+        const std::set<int> again = edgesAfterRebudget(changed);
         if (again.empty()) break;
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
@@ -1059,7 +1055,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             choices.splitThroughBoundaryPoints = options.splitThroughBoundaryPoints;
             choices.flatCellsByDistance = options.flatCellsByDistance;
             choices.filledCellsBySides = !hasFreeEdge(f);
-            if (evenColumns[f]) choices.evenColumns = faceGrids[f];
+            if (hasEvenColumns(f)) choices.evenColumns = faceGrids[f];
             tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f],
                                                                 options.mode, choices);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
