@@ -54,6 +54,9 @@ std::optional<std::vector<std::uint32_t>> ringAround(std::uint32_t v,
     return ring;
 }
 
+// The longest diagonal searched that has no end at the chord's ends (leastChangingTriangulation).
+constexpr std::size_t kLocalSpan = 8;
+
 // A closed axis-aligned box: two segments whose boxes do not meet cannot cross.
 struct Box {
     double x0, y0, x1, y1;
@@ -82,12 +85,13 @@ bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Poin
 // overlay of the two triangulations, so it is largest at the overlay's vertices: the ring's
 // points (no difference), the dropped points (on the new chord) and where an old inner edge
 // crosses a new diagonal. Each diagonal's largest difference is its own, so the best
-// triangulation is found by the polygon triangulation recurrence over the ring, minimising the
-// largest difference. None where no triangulation is valid in (u, v) and in space.
-// forbidden[i * ring.size() + j] tells that the diagonal (i, j) may not be made (it is already
-// an edge outside the old triangles). None too where every triangulation changes the surface by
-// more than `limit` (what the caller could still accept): the diagonals that alone change it
-// more are not searched, which leaves the best one, if it is within the limit, as it was.
+// triangulation (of those whose diagonals are searched, see `searched`) is found by the polygon
+// triangulation recurrence over the ring, minimising the largest difference. None where no
+// triangulation is valid in (u, v) and in space. forbidden[i * ring.size() + j] tells that the
+// diagonal (i, j) may not be made (it is already an edge outside the old triangles). None too where
+// every triangulation changes the surface by more than `limit` (what the caller could still
+// accept): the diagonals that alone change it more are not searched, which leaves the best one, if
+// it is within the limit, as it was.
 std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulation(
     const std::vector<std::uint32_t>& dropped, const std::vector<std::uint32_t>& ring,
     const std::vector<Triangle>& old, const FaceMesh& mesh, const std::vector<char>& forbidden,
@@ -235,34 +239,55 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         sideBoxes.push_back(boxOf(uv(k), uv(k + 1)));
     }
 
+    // The diagonals searched: those from the chord's ends n0 and nm, and those that span at most
+    // kLocalSpan sides of the ring. The best triangulation of a strip along a chord is two fans
+    // from its ends, met by one triangle on the chord, with small local changes: on the corpus
+    // the meshes are byte for byte those of the search over every diagonal (even with a span of
+    // 1), at O(n^2 + n kLocalSpan^2) in place of O(n^3); the wing's rings of 250 took 15 ms each.
+    // Whatever the search finds, its change is measured exactly, so a diagonal left out can only
+    // cost a triangulation, never the bound.
+    auto searched = [&](std::size_t i, std::size_t j) {
+        return i == 0 || j == m || j - i <= kLocalSpan;
+    };
+
     // the largest height difference along the diagonal (i, j), infinite where it may not be made
     std::vector<std::vector<double>> diagonal(size, std::vector<double>(size, kNever));
     for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = i + 2; j < size; ++j) {
             if (i == 0 && j == m) continue;  // the chord: the polygon's own side
             if (forbidden[i * size + j]) continue;
-            double largest = 0;
+            if (!searched(i, j)) continue;
+            // the edges from ring points i + 1 .. j - 1 lie together in fromRing
             const Point2 d2 = ringPlanar[j] - ringPlanar[i];
-            for (std::size_t k = i + 1; k < j && !(largest > limit); ++k)
-                for (std::size_t at = fromRingStart[k]; at < fromRingStart[k + 1]; ++at) {
-                    const EdgeFromRing& edge = fromRing[at];
-                    // an edge between two ring points on one side, or one meeting the diagonal
-                    // at its ends, crosses nothing (the latter made no difference before either)
-                    if (edge.other >= static_cast<int>(i) && edge.other <= static_cast<int>(j))
-                        continue;
-                    // from + s direction = n_i + r (n_j - n_i) in the plane
-                    const Point2& d1 = edge.direction;
-                    const Point2 w = ringPlanar[i] - edge.from;
-                    const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
-                    if (determinant == 0) continue;
-                    const double s = (w.x() * d2.y() - w.y() * d2.x()) / determinant;
-                    const double r = (w.x() * d1.y() - w.y() * d1.x()) / determinant;
-                    if (s < 0 || s > 1 || r < 0 || r > 1) continue;
-                    const double was = edge.fromHeight + s * edge.heightChange;
-                    const double now = ringHeight[i] + r * (ringHeight[j] - ringHeight[i]);
-                    largest = std::max(largest, std::abs(was - now));
-                    if (largest > limit) break;
-                }
+            const double heightAtI = ringHeight[i], heightChange = ringHeight[j] - heightAtI;
+            double largest = 0;
+            for (std::size_t at = fromRingStart[i + 1]; at < fromRingStart[j]; ++at) {
+                const EdgeFromRing& edge = fromRing[at];
+                // an edge between two ring points on one side, or one meeting the diagonal at
+                // its ends, crosses nothing (the latter made no difference before either)
+                if (edge.other >= static_cast<int>(i) && edge.other <= static_cast<int>(j))
+                    continue;
+                // from + s direction = n_i + r (n_j - n_i) in the plane; s and r are kept as
+                // numerators over the determinant, which spares two divisions per edge (this
+                // loop is most of the search)
+                const Point2& d1 = edge.direction;
+                const Point2 w = ringPlanar[i] - edge.from;
+                const double determinant = d1.x() * d2.y() - d1.y() * d2.x();
+                if (determinant == 0) continue;
+                const double sTimes = w.x() * d2.y() - w.y() * d2.x();
+                const double rTimes = w.x() * d1.y() - w.y() * d1.x();
+                const bool outside = determinant > 0 ? (sTimes < 0 || sTimes > determinant ||
+                                                        rTimes < 0 || rTimes > determinant)
+                                                     : (sTimes > 0 || sTimes < determinant ||
+                                                        rTimes > 0 || rTimes < determinant);
+                if (outside) continue;
+                // (was - now) times the determinant
+                const double differenceTimes = (edge.fromHeight - heightAtI) * determinant +
+                                               sTimes * edge.heightChange - rTimes * heightChange;
+                if (std::abs(differenceTimes) > largest * std::abs(determinant))
+                    largest = std::abs(differenceTimes / determinant);
+                if (largest > limit) break;
+            }
             // A diagonal that alone changes the surface by more than the limit is in no
             // triangulation the caller could take: the search leaves it out (its cost stays
             // infinite) without testing its crossings.
@@ -307,7 +332,9 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
                 const std::vector<double>& toJ = cost[j];
                 const std::vector<double>& diagonalsOfI = diagonal[i];
                 const std::vector<double>& diagonalsOfJ = diagonal[j];
-                for (std::size_t k = i + 1; k < j; ++k) {
+                // no split costs less than the outer diagonal: once one reaches it, the first
+                // such split is the one kept
+                for (std::size_t k = i + 1; k < j && best > outer; ++k) {
                     const double c =
                         std::max({fromI[k], toJ[k], diagonalsOfI[k], diagonalsOfJ[k], outer});
                     if (c < best && triangleValid(i, k, j)) best = c, split[i][j] = k;
@@ -330,13 +357,9 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     return std::make_pair(std::move(triangles), std::max(cost[0][m], ontoChord));
 }
 
-// The search is cubic in the ring. Dropped one by one, the points of one chord made each fan
-// join the next one's, and the grown ring was searched again for every point: wing.brep's free
-// edges at relative 1e-4 had rings of hundreds, 88% of its tessellation time. A fan alone keeps
-// its point beyond 64; all the points of a chord at once are searched up to 256 (wing: 0.8 s
-// -> 0.4 s, 145 -> 135 open edges).
-constexpr std::size_t kLargestRing = 64;
-constexpr std::size_t kLargestChordRing = 256;
+// The search keeps n x n tables of the ring: a larger ring keeps its points (wing.brep's
+// largest at relative 1e-4 is 251).
+constexpr std::size_t kLargestRing = 1024;
 
 // v lies on the chord from `last` to `first` in space, strictly between them.
 bool onChord(const FaceMesh& mesh, std::uint32_t v, std::uint32_t last, std::uint32_t first) {
@@ -442,12 +465,12 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
 
     // drops `points` (consecutive on one chord, the first next to the ring's first point) when
     // their disk's re-triangulation is within the allowance
-    auto drop = [&](const std::vector<std::uint32_t>& points, std::size_t largestRing) {
+    auto drop = [&](const std::vector<std::uint32_t>& points) {
         const auto disk = diskAbout(points, mesh.triangles, trianglesOf, removed);
         if (!disk) return false;
         const auto& [ring, inside] = *disk;
         const std::size_t size = ring.size();
-        if (size < 3 || size > largestRing) return false;
+        if (size < 3 || size > kLargestRing) return false;
         // a new diagonal that is already an edge outside the disk would make a non-manifold edge
         std::vector<char> forbidden(size * size, 0);
         for (std::size_t a = 0; a < size; ++a)
@@ -512,7 +535,7 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
                     while (!runs.empty()) {
                         const std::vector<std::uint32_t> run = std::move(runs.back());
                         runs.pop_back();
-                        if (drop(run, kLargestChordRing) || run.size() == 1) continue;
+                        if (drop(run) || run.size() == 1) continue;
                         const auto middle = run.begin() + run.size() / 2;
                         runs.emplace_back(middle, run.end());
                         runs.emplace_back(run.begin(), middle);
@@ -522,7 +545,7 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
             }
         }
         // v alone, its fan as it is now
-        drop({v}, kLargestRing);
+        drop({v});
     }
     std::size_t out = 0;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)

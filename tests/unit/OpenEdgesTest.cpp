@@ -229,18 +229,29 @@ FaceMesh bandOnChord(std::uint32_t count) {
     return mesh;
 }
 
-TEST(OpenEdges, EveryPointOfALongChordIsDropped) {
-    // Dropped one at a time, each point's new triangles joined the next one's fan, whose ring
-    // grew past the search's limit, and one of these 80 stayed on the chord (an open edge more).
-    // All the points of one chord go in one search of their triangles' union.
-    constexpr std::uint32_t count = 80;
+// Every point of bandOnChord(count) goes: the band is then its outline, the chord, its two ends
+// and the upper row's count + 1 sides, in count + 2 triangles.
+void expectEveryChordPointDropped(std::uint32_t count) {
     FaceMesh band = bandOnChord(count);
     EXPECT_EQ(removeOpenBoundaryPoints(band, std::vector<double>(2 * count + 4, 0.0), 1e-6), count);
     std::vector<Point3> positions;
     for (const auto& vertex : band.vertices) positions.push_back(vertex.position);
-    // the band's outline: the chord, its two ends and the upper row's count + 1 sides
     EXPECT_EQ(openEdges(positions, band.triangles, 1e-3), std::size_t(count + 4));
     EXPECT_EQ(band.triangles.size(), std::size_t(count + 2));
+}
+
+TEST(OpenEdges, EveryPointOfALongChordIsDropped) {
+    // Dropped one at a time, each point's new triangles joined the next one's fan, whose ring
+    // grew past the search's limit, and one of these 80 stayed on the chord (an open edge more).
+    // All the points of one chord go in one search of their triangles' union.
+    expectEveryChordPointDropped(80);
+}
+
+TEST(OpenEdges, EveryPointOfAVeryLongChordIsDropped) {
+    // A ring of 603: the search over every diagonal, cubic in the ring, stopped at 256 and split
+    // the chord, leaving a point on it; the search from the chord's ends and over short
+    // diagonals takes the whole chord at once.
+    expectEveryChordPointDropped(600);
 }
 
 }  // namespace
