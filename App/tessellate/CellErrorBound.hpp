@@ -62,12 +62,17 @@ struct CellErrorBound {
     // Bound for triangles with corners anywhere in the cell (trimming points).
     double trimmed() const { return spread + twist; }
     // What the kd-tree compares with its target: in mode Approximate the paper's estimate
-    // (interior + twist, the twist of a flat cell the trimming curves do not cross taken as
-    // planarTwist, as in untrimmed()), otherwise the bound for a cell the trimming curves may
-    // cross or not.
+    // (interior + twist, the twist of a flat cell taken as planarTwist, as in untrimmed()),
+    // otherwise the bound for a cell the trimming curves may cross or not. The estimate takes
+    // planarTwist in trimmed cells too: the twist it leaves out moves the triangles within the
+    // cell's plane, away from the surface nowhere, trimmed or not. Only the bound needs more
+    // there (trimmed() keeps the twist): a triangle point's nearest surface point may lie
+    // beyond the trimming curve, and no proof yet bounds how far. On the corpus at relative
+    // 1e-4 this takes hammer.iges from 10,392 triangles to 7,384 and wing.brep from 2,799 to
+    // 396, the thin trimmed columns of cones and tori no longer split for a twist the surface
+    // does not have.
     double measure(ErrorMode mode, bool trimmedCell) const {
-        if (mode == ErrorMode::Approximate)
-            return interior + (trimmedCell ? twist : std::min(twist, planarTwist));
+        if (mode == ErrorMode::Approximate) return interior + std::min(twist, planarTwist);
         return trimmedCell ? trimmed() : untrimmed();
     }
 };

@@ -219,6 +219,13 @@ TEST(CellErrorBound, ConeColumnIsBoundedByItsBulgeNotItsTwist) {
     // at equal parameters the triangles are farther than the geometric bound: the twist term
     // is what that measure needs, and what the distance does not
     EXPECT_GT(atEqualParameters, 1.5 * bound.untrimmed());
+    // A trimmed cell: the guaranteed bound keeps the twist, the approximate estimate takes the
+    // distance (the bulge) whether trimming curves cross the cell or not.
+    const CellErrorBound approximate = cellErrorBound(patch, ErrorMode::Approximate);
+    EXPECT_GT(bound.measure(ErrorMode::Guaranteed, true), bound.twist);
+    EXPECT_EQ(approximate.measure(ErrorMode::Approximate, true),
+              approximate.measure(ErrorMode::Approximate, false));
+    EXPECT_LE(approximate.measure(ErrorMode::Approximate, true), 1.4 * bulge);
 }
 
 }  // namespace
