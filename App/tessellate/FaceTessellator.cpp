@@ -595,18 +595,23 @@ void FaceTessellator::forEachLeaf(
     const ClipperLib::Paths& region,
     const std::function<void(const Leaf&, const Paths&)>& visit) const {
     // The region cut down the tree node by node: each cut sees only its parent's piece, so the
-    // whole walk costs about the boundary's size times the tree's depth.
+    // whole walk costs about the boundary's size times the tree's depth. A leaf gets its
+    // parent's piece, which its polygons are cut from (polygonsOfLeaf): cut here too, every
+    // leaf was clipped twice.
+    const Paths none;  // a full leaf's: its polygon is its rectangle
     std::vector<std::pair<int, std::shared_ptr<const Paths>>> stack;
     stack.push_back({0, std::make_shared<const Paths>(region)});
     while (!stack.empty()) {
         auto [index, parentRegion] = std::move(stack.back());
         stack.pop_back();
         const Leaf& node = leaves_[index];
+        if (node.leaf) {
+            visit(node, node.full ? none : *parentRegion);
+            continue;
+        }
         Paths piece;
         if (!node.full) piece = clip(*parentRegion, node.rect, true);
-        if (node.leaf) {
-            visit(node, piece);
-        } else if (node.children[0] >= 0) {
+        if (node.children[0] >= 0) {
             // both children read the piece: shared, not copied
             auto shared = std::make_shared<const Paths>(std::move(piece));
             stack.push_back({node.children[1], shared});
