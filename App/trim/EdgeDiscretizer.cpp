@@ -16,6 +16,12 @@ constexpr int kMaxDepth = 24;
 constexpr size_t kMaxPoints = 4096;
 
 bool flatEnough(std::vector<CurvePoints>& uses, double s0, double s1, double eps) {
+    // The curve's middle point farther than eps from the chord rules the piece out at the cost
+    // of one point: the bound below is at least that far, and the pieces of the first levels
+    // of a subdivision are all ruled out so (chordBound took most of the edges' time).
+    const double middle = 0.5 * (s0 + s1);
+    for (auto& use : uses)
+        if (distanceToSegment(use(middle), use(s0), use(s1)) > eps) return false;
     for (auto& use : uses) {
         const ChordBound b = chordBound(use, s0, s1);
         // a large residual means the interpolant does not yet represent the piece: its hull
