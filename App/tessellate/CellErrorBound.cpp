@@ -50,29 +50,40 @@ struct DifferenceRange {
     double largestValue = 0;   // largest |E| at the parts' corners: a lower bound of max |E|
 };
 
-// The largest distance between a point of `from` and a point of `to`. Exact, without all the
-// pairs: with c the centre of `to`'s bounding box and R the largest |q - c| over `to`, no pair
-// with p is farther than |p - c| + R, so after the pairs of the point farthest from c only the
-// points that can still beat the largest distance found are taken.
-double farthestPair(const std::vector<Point3>& from, const std::vector<Point3>& to) {
+// How far each point of `from` can be from any point of `to`: |p - c| + R, with c the centre
+// of `to`'s bounding box and R the largest |q - c| over `to`; and which point reaches farthest.
+struct Reach {
+    std::vector<double> of;
+    size_t farthest = 0;
+};
+
+Reach reachOf(const std::vector<Point3>& from, const std::vector<Point3>& to) {
     Point3 low = to.front(), high = to.front();
     for (const Point3& q : to) low = low.cwiseMin(q), high = high.cwiseMax(q);
     const Point3 centre = 0.5 * (low + high);
     double radius = 0;
     for (const Point3& q : to) radius = std::max(radius, (q - centre).norm());
-    std::vector<double> reach(from.size());
-    size_t first = 0;
+    Reach reach{std::vector<double>(from.size())};
     for (size_t i = 0; i < from.size(); ++i) {
-        reach[i] = (from[i] - centre).norm() + radius;
-        if (reach[i] > reach[first]) first = i;
+        reach.of[i] = (from[i] - centre).norm() + radius;
+        if (reach.of[i] > reach.of[reach.farthest]) reach.farthest = i;
     }
+    return reach;
+}
+
+// The largest distance between a point of `from` and a point of `to`. Exact, without all the
+// pairs: no pair with p is farther than p's reach (reachOf), so after the pairs of the point
+// that reaches farthest only the points that can still beat the largest distance found are
+// taken.
+double farthestPair(const std::vector<Point3>& from, const std::vector<Point3>& to) {
+    const Reach reach = reachOf(from, to);
     double farthest2 = 0;
     auto pairsOf = [&](size_t i) {
         for (const Point3& q : to) farthest2 = std::max(farthest2, (from[i] - q).squaredNorm());
     };
-    pairsOf(first);
+    pairsOf(reach.farthest);
     for (size_t i = 0; i < from.size(); ++i)
-        if (i != first && reach[i] * reach[i] > farthest2) pairsOf(i);
+        if (i != reach.farthest && reach.of[i] * reach.of[i] > farthest2) pairsOf(i);
     return std::sqrt(farthest2);
 }
 
@@ -80,22 +91,12 @@ double farthestPair(const std::vector<Point3>& from, const std::vector<Point3>& 
 // taken with p_j's pairs, or p_j was passed over because no pair with it could beat the
 // largest distance found, which only grows. Half the work of a trimmed cell's spread.
 double diameter(const std::vector<Point3>& points) {
-    Point3 low = points.front(), high = points.front();
-    for (const Point3& q : points) low = low.cwiseMin(q), high = high.cwiseMax(q);
-    const Point3 centre = 0.5 * (low + high);
-    double radius = 0;
-    for (const Point3& q : points) radius = std::max(radius, (q - centre).norm());
-    std::vector<double> reach(points.size());
-    size_t first = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-        reach[i] = (points[i] - centre).norm() + radius;
-        if (reach[i] > reach[first]) first = i;
-    }
+    const Reach reach = reachOf(points, points);
     double farthest2 = 0;
     for (const Point3& q : points)
-        farthest2 = std::max(farthest2, (points[first] - q).squaredNorm());
+        farthest2 = std::max(farthest2, (points[reach.farthest] - q).squaredNorm());
     for (size_t i = 0; i < points.size(); ++i) {
-        if (i == first || !(reach[i] * reach[i] > farthest2)) continue;
+        if (i == reach.farthest || !(reach.of[i] * reach.of[i] > farthest2)) continue;
         for (size_t j = i + 1; j < points.size(); ++j)
             farthest2 = std::max(farthest2, (points[i] - points[j]).squaredNorm());
     }
