@@ -638,18 +638,31 @@ private:
                 deviation = std::max(deviation, candidates[i].referenceDistance -
                                                     referenceDeflection_ - edgeTolerance);
 
-        const BRepTopAdaptor_FClass2d classifier(face_, Precision::Confusion());
-        tbb::enumerable_thread_specific<std::unique_ptr<TrimmedFaceDistance>> distances;
+        // One classifier per thread: BRepTopAdaptor_FClass2d::Perform is const, but it finds
+        // each wire's polygon in an NCollection_Sequence whose lookup caches the last node it
+        // visited, so threads sharing the classifier of a face with holes could follow
+        // another thread's half-written node and crash.
+        struct Classifier {
+            std::unique_ptr<BRepTopAdaptor_FClass2d> inside;
+            std::unique_ptr<TrimmedFaceDistance> distance;
+        };
+        tbb::enumerable_thread_specific<Classifier> classifiers;
         const double exact = tbb::parallel_reduce(
             tbb::blocked_range<std::size_t>(0, exactCount, 8), 0.0,
             [&](const tbb::blocked_range<std::size_t>& range, double largest) {
+                Classifier& classifier = classifiers.local();
                 for (std::size_t i = range.begin(); i != range.end(); ++i) {
                     const Sample& sample = candidates[i];
-                    if (sample.projected && classifier.Perform(sample.foot) != TopAbs_OUT)
-                        continue;  // inside: the trimmed distance is the surface distance
-                    std::unique_ptr<TrimmedFaceDistance>& distance = distances.local();
-                    if (!distance) distance = std::make_unique<TrimmedFaceDistance>(face_);
-                    const double trimmed = distance->distance(toOcc(sample.point));
+                    if (sample.projected) {
+                        if (!classifier.inside)
+                            classifier.inside = std::make_unique<BRepTopAdaptor_FClass2d>(
+                                face_, Precision::Confusion());
+                        if (classifier.inside->Perform(sample.foot) != TopAbs_OUT)
+                            continue;  // inside: the trimmed distance is the surface distance
+                    }
+                    if (!classifier.distance)
+                        classifier.distance = std::make_unique<TrimmedFaceDistance>(face_);
+                    const double trimmed = classifier.distance->distance(toOcc(sample.point));
                     largest = std::max(largest, trimmed - edgeTolerance);
                 }
                 return largest;

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -13,6 +17,8 @@
 #include <TopoDS_Face.hxx>
 #include <cmath>
 #include <filesystem>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
 #include <limits>
 #include <map>
 #include <set>
@@ -280,4 +286,37 @@ TEST(MeshVerifier, CorpusBoltMeshedByBRepMeshPasses) {
     EXPECT_NEAR(report.maxDev, 0.00233, 0.0002);
     EXPECT_NEAR(report.maxCover, 0.00233, 0.0002);
     EXPECT_EQ(report.openEdges, 0u);
+}
+
+TEST(MeshVerifier, ClassifiesManyBorderSamplesOnSeveralThreadsAtOnce) {
+    // A square plate with nine round holes, its mesh lifted off the plane by 0.6 T: every
+    // sample is 0.6 T off the surface, so each one near a border is classified against all ten
+    // wires, hundreds at once on every thread. OpenCASCADE's classifier walks its wires in a
+    // sequence that caches the last node it found, so one classifier shared between threads
+    // crashed now and then; repeating the run makes such a race likely to show.
+    BRepBuilderAPI_MakePolygon square(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0), gp_Pnt(10, 10, 0),
+                                      gp_Pnt(0, 10, 0), Standard_True);
+    BRepBuilderAPI_MakeFace plate(gp_Pln(gp::XOY()), square.Wire());
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const gp_Circ circle(gp_Ax2(gp_Pnt(2 + 3 * i, 2 + 3 * j, 0), -gp::DZ()), 0.5);
+            plate.Add(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)).Wire());
+        }
+    ASSERT_TRUE(plate.IsDone());
+    const TopoDS_Shape face = plate.Shape();
+    const double tolerance = 0.01, offset = 0.6 * tolerance;
+    Mesh mesh = brepMeshOf(face, tolerance / 8, false);
+    ASSERT_GT(mesh.triangles.size(), 500u);
+    for (Point3& p : mesh.positions) p.z() += offset;
+
+    const auto first = verifyMesh(face, mesh, tolerance);
+    ASSERT_TRUE(first.pass);
+    // chords across a hole's rim lie up to their sag (T / 8) outside the face
+    ASSERT_GE(first.maxDev, offset - 1e-9);
+    ASSERT_LE(first.maxDev, std::hypot(offset, tolerance / 8) + 1e-9);
+    for (int run = 1; run < 8; ++run) {
+        const auto report = verifyMesh(face, mesh, tolerance);
+        ASSERT_TRUE(report.pass) << "run " << run;
+        ASSERT_NEAR(report.maxDev, first.maxDev, 1e-9) << "run " << run;
+    }
 }
