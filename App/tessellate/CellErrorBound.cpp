@@ -162,7 +162,7 @@ constexpr int kMostPieces = 2;
 }  // namespace
 
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target,
-                              bool trimmedCell, bool byDistance) {
+                              bool trimmedCell, bool byDistance, double pieceFraction) {
     const int m = patch.degreeU(), n = patch.degreeV();
     const Point3 c00 = patch.pole3(0, 0), c10 = patch.pole3(m, 0);
     const Point3 c01 = patch.pole3(0, n), c11 = patch.pole3(m, n);
@@ -172,6 +172,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     CellErrorBound bound;
     bound.twist = 0.25 * (c00 - c10 - c01 + c11).norm();
     if (byDistance) bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
+    bound.pieceFraction = std::clamp(pieceFraction, 0.0, 1.0);
 
     // Points standing for the surface: control points (conservative) or surface points at the
     // control points' parameters (approximate).
@@ -234,8 +235,8 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
             // both bounds are at least max |E| plus their twist term (E = 0 at the corners, which
             // are on the sides): a surface point that far off means no subdivision can reach the
             // target
-            const double twistTerm =
-                trimmedCell ? bound.twist : std::min(bound.twist, bound.planarTwist);
+            const double twistTerm = trimmedCell ? bound.pieceFraction * bound.twist
+                                                 : std::min(bound.twist, bound.planarTwist);
             if (range.largestValue + twistTerm > target) break;
         }
     }

@@ -53,6 +53,13 @@ struct CellErrorBound {
     // B'(x) the same way. A geometric bound, not at equal parameters as `twist`: the verifier and
     // the guarantee measure distances.
     double planarTwist = std::numeric_limits<double>::infinity();
+    // Where the trimmed region's piece of the cell lies in a box of a fraction fu of the cell's
+    // width and fv of its height, fu fv (1 for the whole cell): a triangle with its corners in
+    // that box deviates from the bilinear patch by at most fu fv twist. In the box's own
+    // coordinates (s = s0 + fu s', t = t0 + fv t') the product s t is fu fv s' t' plus terms
+    // linear in s' and t', which a triangle interpolates exactly, and the twist bound holds for
+    // s' t' over any triangle in the unit square.
+    double pieceFraction = 1;
     // Preferred split: direction (0 = u, 1 = v) and local position in (0, 1).
     int splitDirection = 0;
     double splitAt = 0.5;
@@ -60,7 +67,7 @@ struct CellErrorBound {
     // Bound for triangles whose corners are cell corners or lie on the cell edges.
     double untrimmed() const { return spreadToEdges + std::min(twist, planarTwist); }
     // Bound for triangles with corners anywhere in the cell (trimming points).
-    double trimmed() const { return spread + twist; }
+    double trimmed() const { return spread + pieceFraction * twist; }
     // What the kd-tree compares with its target: in mode Approximate the paper's estimate
     // (interior + twist, the twist of a flat cell taken as planarTwist, as in untrimmed()),
     // otherwise the bound for a cell the trimming curves may cross or not. The estimate takes
@@ -86,7 +93,9 @@ struct CellErrorBound {
 // Approximate: the control points replaced by surface points at the control points' parameters
 // (paper section 5.2); `target` is not used.
 // With `byDistance` false, planarTwist stays infinite: the bounds hold at equal parameters.
+// `pieceFraction`: CellErrorBound::pieceFraction, for trimmed().
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
-                              bool trimmedCell = false, bool byDistance = true);
+                              bool trimmedCell = false, bool byDistance = true,
+                              double pieceFraction = 1);
 
 }  // namespace nurbslod

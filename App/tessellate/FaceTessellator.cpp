@@ -382,6 +382,18 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         // cell, so the bound for corners on the sides holds (CellErrorBound::untrimmed), with
         // the surface share as the target: its boundary triangles spend the other shares.
         bool sidesOnly = false;
+        // The box around the region's piece, as a fraction of the cell (CellErrorBound::
+        // pieceFraction). Grown by two steps: the crossings added before triangulate() move
+        // the boundary by the rounding to the integer grid.
+        double pieceFraction = 1;
+        auto setPieceBox = [&](cInt x0, cInt y0, cInt x1, cInt y1) {
+            auto extent = [](cInt lo, cInt hi, cInt cellLo, cInt cellHi) {
+                lo = std::max(lo - 2, cellLo);
+                hi = std::min(hi + 2, cellHi);
+                return std::clamp(double(hi - lo) / double(cellHi - cellLo), 0.0, 1.0);
+            };
+            pieceFraction = extent(x0, x1, r.x0, r.x1) * extent(y0, y1, r.y0, r.y1);
+        };
         if (!node.full) {
             // Most cells are wholly inside or outside: told apart without clipping. The others
             // are clipped to the cell grown by the margin, not to the cell: a child shares sides
@@ -397,6 +409,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                           grown.y0 < rectangle->y1 && rectangle->y0 < grown.y1))
                         continue;
                     sidesOnly = choices_.filledCellsBySides && contains(*rectangle, r);
+                    setPieceBox(rectangle->x0, rectangle->y0, rectangle->x1, rectangle->y1);
                 }
             } else {
                 const RectangleInRegion where =
@@ -423,6 +436,13 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                     const double cellArea = double(r.x1 - r.x0) * double(r.y1 - r.y0);
                     sidesOnly = choices_.filledCellsBySides &&
                                 std::abs(area) >= (1 - 1e-9) * cellArea && isWholeCell(piece, r);
+                    cInt x0 = r.x1, y0 = r.y1, x1 = r.x0, y1 = r.y0;
+                    for (const Path& path : piece)
+                        for (const IntPoint& q : path) {
+                            x0 = std::min(x0, q.X), x1 = std::max(x1, q.X);
+                            y0 = std::min(y0, q.Y), y1 = std::max(y1, q.Y);
+                        }
+                    setPieceBox(x0, y0, x1, y1);
                     node.region = std::make_shared<const Paths>(std::move(piece));
                 }
             }
@@ -472,8 +492,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const BezierPatch piece = patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y());
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
-        const CellErrorBound bound =
-            cellErrorBound(piece, mode_, target, trimmedCell, choices_.flatCellsByDistance);
+        const CellErrorBound bound = cellErrorBound(piece, mode_, target, trimmedCell,
+                                                    choices_.flatCellsByDistance, pieceFraction);
         if (bound.measure(mode_, trimmedCell) <= target) {
             leaves_[node.index].leaf = true;
             continue;

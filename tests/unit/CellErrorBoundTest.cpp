@@ -111,6 +111,55 @@ TEST(CellErrorBound, GuaranteedBoundIsNeverBelowAMeasuredDistance) {
     EXPECT_EQ(checked, 4 * 3 * 3 * 4 * 2 * 4);
 }
 
+// Triangles whose corners lie in a box of a fraction fu x fv of the cell (a trimmed region's
+// piece) deviate by at most fu fv of the twist from the bilinear patch.
+TEST(CellErrorBound, TrimmedPieceInASmallerBoxTakesThatFractionOfTheTwist) {
+    // a saddle: all twist, no rest (E = 0); the triangle along a diagonal of the box is off by
+    // exactly fu fv h / 4 at its middle
+    const double h = 2.0;
+    BezierPatch saddle(1, 1);
+    saddle.pole(0, 0) = HomogeneousPoint3(0, 0, 0, 1);
+    saddle.pole(1, 0) = HomogeneousPoint3(1, 0, 0, 1);
+    saddle.pole(0, 1) = HomogeneousPoint3(0, 1, 0, 1);
+    saddle.pole(1, 1) = HomogeneousPoint3(1, 1, h, 1);
+    for (const auto& [u0, v0, fu, fv] : {std::array<double, 4>{0, 0, 1, 1},
+                                         {0.25, 0.5, 0.5, 0.5},
+                                         {0.1, 0, 0.2, 1},
+                                         {0.6, 0.7, 0.4, 0.05}}) {
+        const CellErrorBound bound =
+            cellErrorBound(saddle, ErrorMode::Guaranteed, 0, true, true, fu * fv);
+        const double diagonal =
+            sampledTriangleDistance(saddle, {u0, v0}, {u0 + fu, v0 + fv}, {u0, v0 + fv}, 24);
+        EXPECT_NEAR(bound.trimmed(), fu * fv * h / 4, 1e-12);
+        EXPECT_LE(diagonal, bound.trimmed() * (1 + 1e-9));
+        EXPECT_GE(diagonal, 0.99 * bound.trimmed());
+    }
+
+    // random rational patches and triangles with corners anywhere in random boxes
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int checked = 0;
+    for (int degreeU : {1, 2, 3})
+        for (int degreeV : {1, 3})
+            for (double noise : {0.0, 0.2})
+                for (int trial = 0; trial < 4; ++trial) {
+                    const BezierPatch patch = randomPatch(random, degreeU, degreeV, noise);
+                    const double fu = 0.05 + 0.95 * unit(random), fv = 0.05 + 0.95 * unit(random);
+                    const double u0 = (1 - fu) * unit(random), v0 = (1 - fv) * unit(random);
+                    const CellErrorBound bound =
+                        cellErrorBound(patch, ErrorMode::Guaranteed, 0, true, true, fu * fv);
+                    auto inBox = [&]() -> Parameter {
+                        return {u0 + fu * unit(random), v0 + fv * unit(random)};
+                    };
+                    for (int k = 0; k < 8; ++k) {
+                        const double d = sampledTriangleDistance(patch, inBox(), inBox(), inBox());
+                        EXPECT_LE(d, bound.trimmed() * (1 + 1e-9) + 1e-12);
+                        ++checked;
+                    }
+                }
+    EXPECT_EQ(checked, 3 * 2 * 2 * 4 * 8);
+}
+
 // A cylinder piece of 30 degrees (rational quadratic arc, middle weight cos 15 deg) bulges to
 // one side only: its two triangles are off by the sagitta r (1 - cos 15 deg) at the middle.
 // The sum of the largest deviations inside and on the sides (the bound before) is 2.7 times
