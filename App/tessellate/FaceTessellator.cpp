@@ -4,7 +4,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -525,8 +524,9 @@ namespace {
 // Cell corners by the line they lie on, to put a neighbour's corners (hanging points) into
 // the sides of a bigger cell so that neighbouring cells share every point of a common side.
 struct CornerLines {
-    std::map<cInt, std::vector<cInt>> onVertical;    // x -> sorted y
-    std::map<cInt, std::vector<cInt>> onHorizontal;  // y -> sorted x
+    // looked up by line only, never walked in order: hashed
+    std::unordered_map<cInt, std::vector<cInt>> onVertical;    // x -> sorted y
+    std::unordered_map<cInt, std::vector<cInt>> onHorizontal;  // y -> sorted x
 
     void finish() {
         for (auto* lines : {&onVertical, &onHorizontal})
@@ -691,10 +691,14 @@ void splitNeedles(FaceMesh& mesh) {
         const Vector3 n = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
         return n.norm() <= 1e-9 * longestLength;
     };
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> triangleOfEdge;
+    auto edgeKey = [](std::uint32_t from, std::uint32_t to) {
+        return (std::uint64_t{from} << 32) | to;
+    };
+    std::unordered_map<std::uint64_t, std::size_t> triangleOfEdge;
+    triangleOfEdge.reserve(mesh.triangles.size() * 3);
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
         for (int k = 0; k < 3; ++k)
-            triangleOfEdge[{mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3]}] = i;
+            triangleOfEdge[edgeKey(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3])] = i;
     std::vector<char> removed(mesh.triangles.size(), 0);
     // each split removes one needle; a split can make a new needle of a neighbour, so the
     // passes are bounded by the number of triangles that were there at the start
@@ -707,7 +711,7 @@ void splitNeedles(FaceMesh& mesh) {
         const std::uint32_t a = needle[longest], b = needle[(longest + 1) % 3];
         const std::uint32_t c = needle[(longest + 2) % 3];
         // the neighbour runs the long edge the other way: b -> a
-        auto it = triangleOfEdge.find({b, a});
+        auto it = triangleOfEdge.find(edgeKey(b, a));
         if (it == triangleOfEdge.end() || removed[it->second]) continue;
         const std::size_t j = it->second;
         const auto other = mesh.triangles[j];
@@ -723,8 +727,8 @@ void splitNeedles(FaceMesh& mesh) {
         removed.push_back(0);
         for (const std::size_t index : {j, mesh.triangles.size() - 1})
             for (int k = 0; k < 3; ++k)
-                triangleOfEdge[{mesh.triangles[index][k], mesh.triangles[index][(k + 1) % 3]}] =
-                    index;
+                triangleOfEdge[edgeKey(mesh.triangles[index][k],
+                                       mesh.triangles[index][(k + 1) % 3])] = index;
     }
     std::size_t out = 0;
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
