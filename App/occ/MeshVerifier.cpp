@@ -642,27 +642,27 @@ private:
         // each wire's polygon in an NCollection_Sequence whose lookup caches the last node it
         // visited, so threads sharing the classifier of a face with holes could follow
         // another thread's half-written node and crash.
-        struct Classifier {
-            std::unique_ptr<BRepTopAdaptor_FClass2d> inside;
+        struct ExactCheck {
+            std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
             std::unique_ptr<TrimmedFaceDistance> distance;
         };
-        tbb::enumerable_thread_specific<Classifier> classifiers;
+        tbb::enumerable_thread_specific<ExactCheck> checks;
         const double exact = tbb::parallel_reduce(
             tbb::blocked_range<std::size_t>(0, exactCount, 8), 0.0,
             [&](const tbb::blocked_range<std::size_t>& range, double largest) {
-                Classifier& classifier = classifiers.local();
+                ExactCheck& check = checks.local();
                 for (std::size_t i = range.begin(); i != range.end(); ++i) {
                     const Sample& sample = candidates[i];
                     if (sample.projected) {
-                        if (!classifier.inside)
-                            classifier.inside = std::make_unique<BRepTopAdaptor_FClass2d>(
+                        if (!check.classifier)
+                            check.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(
                                 face_, Precision::Confusion());
-                        if (classifier.inside->Perform(sample.foot) != TopAbs_OUT)
+                        if (check.classifier->Perform(sample.foot) != TopAbs_OUT)
                             continue;  // inside: the trimmed distance is the surface distance
                     }
-                    if (!classifier.distance)
-                        classifier.distance = std::make_unique<TrimmedFaceDistance>(face_);
-                    const double trimmed = classifier.distance->distance(toOcc(sample.point));
+                    if (!check.distance)
+                        check.distance = std::make_unique<TrimmedFaceDistance>(face_);
+                    const double trimmed = check.distance->distance(toOcc(sample.point));
                     largest = std::max(largest, trimmed - edgeTolerance);
                 }
                 return largest;

@@ -76,6 +76,31 @@ bool isWholeCell(const Paths& piece, const Rect& r) {
     return corners == 4;
 }
 
+// The smallest rectangle holding every point of `paths` (an empty one, x0 > x1, if none).
+Rect boundsOf(const Paths& paths) {
+    constexpr cInt kLow = std::numeric_limits<cInt>::lowest(),
+                   kHigh = std::numeric_limits<cInt>::max();
+    Rect box{kHigh, kHigh, kLow, kLow};
+    for (const Path& path : paths)
+        for (const IntPoint& p : path) {
+            box.x0 = std::min(box.x0, p.X), box.y0 = std::min(box.y0, p.Y);
+            box.x1 = std::max(box.x1, p.X), box.y1 = std::max(box.y1, p.Y);
+        }
+    return box;
+}
+
+// The part of `cell` that `box` (a region's piece) covers, as width fraction times height
+// fraction (CellErrorBound::pieceFraction). The box is grown by two steps: the crossings added
+// before triangulate() move the boundary by the rounding to the integer grid.
+double fractionOfCell(const Rect& box, const Rect& cell) {
+    auto extent = [](cInt lo, cInt hi, cInt cellLo, cInt cellHi) {
+        lo = std::max(lo - 2, cellLo);
+        hi = std::min(hi + 2, cellHi);
+        return std::clamp(double(hi - lo) / double(cellHi - cellLo), 0.0, 1.0);
+    };
+    return extent(box.x0, box.x1, cell.x0, cell.x1) * extent(box.y0, box.y1, cell.y0, cell.y1);
+}
+
 // The rectangle the region is, where it is one (a cylinder, cone or torus between circles: one
 // counter-clockwise path, each side along its bounding box's sides, the box's sides holding
 // the edges' points); none otherwise.
@@ -83,11 +108,7 @@ std::optional<Rect> regionRectangle(const Paths& region) {
     if (region.size() != 1 || region[0].size() < 4 || !ClipperLib::Orientation(region[0]))
         return std::nullopt;
     const Path& path = region[0];
-    Rect box{path[0].X, path[0].Y, path[0].X, path[0].Y};
-    for (const IntPoint& p : path) {
-        box.x0 = std::min(box.x0, p.X), box.y0 = std::min(box.y0, p.Y);
-        box.x1 = std::max(box.x1, p.X), box.y1 = std::max(box.y1, p.Y);
-    }
+    const Rect box = boundsOf(region);
     if (!(box.x0 < box.x1 && box.y0 < box.y1)) return std::nullopt;
     for (std::size_t i = 0; i < path.size(); ++i) {
         const IntPoint &a = path[i], &b = path[(i + 1) % path.size()];
@@ -381,18 +402,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         // cell, so the bound for corners on the sides holds (CellErrorBound::untrimmed), with
         // the surface share as the target: its boundary triangles spend the other shares.
         bool sidesOnly = false;
-        // The box around the region's piece, as a fraction of the cell (CellErrorBound::
-        // pieceFraction). Grown by two steps: the crossings added before triangulate() move
-        // the boundary by the rounding to the integer grid.
+        // how much of the cell the box around the region's piece covers (fractionOfCell)
         double pieceFraction = 1;
-        auto setPieceBox = [&](cInt x0, cInt y0, cInt x1, cInt y1) {
-            auto extent = [](cInt lo, cInt hi, cInt cellLo, cInt cellHi) {
-                lo = std::max(lo - 2, cellLo);
-                hi = std::min(hi + 2, cellHi);
-                return std::clamp(double(hi - lo) / double(cellHi - cellLo), 0.0, 1.0);
-            };
-            pieceFraction = extent(x0, x1, r.x0, r.x1) * extent(y0, y1, r.y0, r.y1);
-        };
         if (!node.full) {
             // Most cells are wholly inside or outside: told apart without clipping. The others
             // are clipped to the cell grown by the margin, not to the cell: a child shares sides
@@ -408,7 +419,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                           grown.y0 < rectangle->y1 && rectangle->y0 < grown.y1))
                         continue;
                     sidesOnly = choices_.filledCellsBySides && contains(*rectangle, r);
-                    setPieceBox(rectangle->x0, rectangle->y0, rectangle->x1, rectangle->y1);
+                    pieceFraction = fractionOfCell(*rectangle, r);
                 }
             } else {
                 const RectangleInRegion where =
@@ -435,13 +446,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                     const double cellArea = double(r.x1 - r.x0) * double(r.y1 - r.y0);
                     sidesOnly = choices_.filledCellsBySides &&
                                 std::abs(area) >= (1 - 1e-9) * cellArea && isWholeCell(piece, r);
-                    cInt x0 = r.x1, y0 = r.y1, x1 = r.x0, y1 = r.y0;
-                    for (const Path& path : piece)
-                        for (const IntPoint& q : path) {
-                            x0 = std::min(x0, q.X), x1 = std::max(x1, q.X);
-                            y0 = std::min(y0, q.Y), y1 = std::max(y1, q.Y);
-                        }
-                    setPieceBox(x0, y0, x1, y1);
+                    pieceFraction = fractionOfCell(boundsOf(piece), r);
                     node.region = std::make_shared<const Paths>(std::move(piece));
                 }
             }
