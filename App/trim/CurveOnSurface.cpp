@@ -3,7 +3,9 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -60,6 +62,46 @@ Point3 bezierPoint(const ControlPoints& control, int n, double t) {
 }
 
 }  // namespace
+
+namespace {
+// A parameter's bits, mixed (the standard library hashes a double byte by byte, a tenth of the
+// edges' subdivision time).
+std::size_t slotHash(std::uint64_t bits) {
+    bits ^= bits >> 33;
+    bits *= 0xff51afd7ed558ccdULL;
+    bits ^= bits >> 33;
+    return static_cast<std::size_t>(bits);
+}
+}  // namespace
+
+Point3 CurvePoints::operator()(double s) {
+    if (std::isnan(s)) return curve_->point(s);
+    // 0 and -0 compare equal: one key
+    const std::uint64_t key = std::bit_cast<std::uint64_t>(s == 0 ? 0.0 : s);
+    if (2 * (used_ + 1) > slots_.size()) grow();
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t at = slotHash(key) & mask;
+    while (slots_[at].key != kEmpty) {
+        if (slots_[at].key == key) return slots_[at].point;
+        at = (at + 1) & mask;
+    }
+    slots_[at] = {key, curve_->point(s)};
+    ++used_;
+    if (evaluations_) ++*evaluations_;
+    return slots_[at].point;
+}
+
+void CurvePoints::grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{kEmpty, Point3::Zero()});
+    const std::size_t mask = slots_.size() - 1;
+    for (const Slot& slot : old) {
+        if (slot.key == kEmpty) continue;
+        std::size_t at = slotHash(slot.key) & mask;
+        while (slots_[at].key != kEmpty) at = (at + 1) & mask;
+        slots_[at] = slot;
+    }
+}
 
 ChordBound chordBound(const CurveOnSurface& curve, double s0, double s1) {
     CurvePoints points(curve);

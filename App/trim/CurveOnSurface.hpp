@@ -3,7 +3,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
+#include <vector>
 
 #include "geometry/BSplineCurve2d.hpp"
 #include "geometry/BSplineSurface.hpp"
@@ -69,30 +69,22 @@ public:
     explicit CurvePoints(const CurveOnSurface& curve, std::size_t* evaluations = nullptr)
         : curve_(&curve), evaluations_(evaluations) {}
     const CurveOnSurface& curve() const { return *curve_; }
-    Point3 operator()(double s) {
-        const auto [at, added] = points_.try_emplace(s);
-        if (added) {
-            at->second = curve_->point(s);
-            if (evaluations_) ++*evaluations_;
-        }
-        return at->second;
-    }
+    Point3 operator()(double s);
 
 private:
-    // A parameter's bits, mixed (the standard library hashes a double byte by byte, a tenth of
-    // the edges' subdivision time); 0 and -0, which compare equal, hash alike.
-    struct ParameterHash {
-        std::size_t operator()(double s) const noexcept {
-            std::uint64_t bits = std::bit_cast<std::uint64_t>(s == 0 ? 0.0 : s);
-            bits ^= bits >> 33;
-            bits *= 0xff51afd7ed558ccdULL;
-            bits ^= bits >> 33;
-            return static_cast<std::size_t>(bits);
-        }
+    // Open addressing in one array: a node-based map allocated every point, which was most of
+    // the edges' time spent in malloc. A slot is empty while its key is kEmpty, a NaN that no
+    // parameter is (a NaN parameter is evaluated and not kept).
+    struct Slot {
+        std::uint64_t key;
+        Point3 point;
     };
+    static constexpr std::uint64_t kEmpty = 0x7ff8dead0000beefULL;
+    void grow();
     const CurveOnSurface* curve_;
     std::size_t* evaluations_;
-    std::unordered_map<double, Point3, ParameterHash> points_;
+    std::vector<Slot> slots_;
+    std::size_t used_ = 0;
 };
 ChordBound chordBound(CurvePoints& points, double s0, double s1);
 
