@@ -16,6 +16,7 @@
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 #include "tessellate/RectangleInRegion.hpp"
+#include "tessellate/WindingRectangleClip.hpp"
 
 namespace nurbslod {
 
@@ -635,7 +636,9 @@ void FaceTessellator::forEachLeaf(
             continue;
         }
         Paths piece;
-        if (!node.full) piece = clip(*parentRegion, node.rect, true);
+        if (!node.full)
+            piece = clipKeepingWinding(*parentRegion, node.rect.x0, node.rect.y0, node.rect.x1,
+                                       node.rect.y1);
         if (node.children[0] >= 0) {
             // both children read the piece: shared, not copied
             auto shared = std::make_shared<const Paths>(std::move(piece));

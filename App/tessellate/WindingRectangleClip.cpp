@@ -1,0 +1,94 @@
+#include "tessellate/WindingRectangleClip.hpp"
+
+#include <cstdint>
+
+namespace nurbslod {
+
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+
+namespace {
+
+// The half-plane coordinate(p) >= bound (keepAbove) or <= bound, coordinate 0: x, 1: y.
+struct HalfPlane {
+    int coordinate;
+    cInt bound;
+    bool keepAbove;
+    cInt along(const IntPoint& p) const { return coordinate == 0 ? p.X : p.Y; }
+    cInt across(const IntPoint& p) const { return coordinate == 0 ? p.Y : p.X; }
+    bool inside(const IntPoint& p) const {
+        return keepAbove ? along(p) >= bound : along(p) <= bound;
+    }
+    // The point of segment a-b on the line, a and b on opposite sides: the other coordinate
+    // interpolated exactly in 128 bits and rounded to the nearest integer.
+    IntPoint cut(const IntPoint& a, const IntPoint& b) const {
+        const __int128 da = along(b) - along(a);
+        const __int128 numerator =
+            static_cast<__int128>(bound - along(a)) * (across(b) - across(a));
+        // round(numerator / da) with da != 0 (a and b are on opposite sides)
+        __int128 q = numerator / da, r = numerator % da;
+        if (2 * (r < 0 ? -r : r) >= (da < 0 ? -da : da)) q += ((r < 0) != (da < 0)) ? -1 : 1;
+        const cInt value = across(a) + static_cast<cInt>(q);
+        return coordinate == 0 ? IntPoint{bound, value} : IntPoint{value, bound};
+    }
+};
+
+void clipAgainst(const Path& in, const HalfPlane& plane, Path& out) {
+    out.clear();
+    if (in.empty()) return;
+    auto push = [&](const IntPoint& p) {
+        if (out.empty() || !(out.back() == p)) out.push_back(p);
+    };
+    IntPoint previous = in.back();
+    bool previousInside = plane.inside(previous);
+    for (const IntPoint& current : in) {
+        const bool currentInside = plane.inside(current);
+        if (currentInside != previousInside) {
+            // a point already on the line is itself the crossing
+            if (currentInside && plane.along(current) == plane.bound)
+                ;
+            else if (previousInside && plane.along(previous) == plane.bound)
+                ;
+            else
+                push(previousInside ? plane.cut(previous, current) : plane.cut(current, previous));
+        }
+        if (currentInside) push(current);
+        previous = current;
+        previousInside = currentInside;
+    }
+    while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+}
+
+}  // namespace
+
+Paths clipKeepingWinding(const Paths& region, cInt x0, cInt y0, cInt x1, cInt y1) {
+    const HalfPlane planes[4] = {{0, x0, true}, {0, x1, false}, {1, y0, true}, {1, y1, false}};
+    Paths out;
+    Path a, b;
+    for (const Path& path : region) {
+        // a path wholly inside is kept as it is, one wholly outside one side is dropped
+        cInt lowX = path.empty() ? 0 : path[0].X, highX = lowX;
+        cInt lowY = path.empty() ? 0 : path[0].Y, highY = lowY;
+        for (const IntPoint& p : path) {
+            lowX = std::min(lowX, p.X), highX = std::max(highX, p.X);
+            lowY = std::min(lowY, p.Y), highY = std::max(highY, p.Y);
+        }
+        if (path.size() < 3 || highX <= x0 || lowX >= x1 || highY <= y0 || lowY >= y1) continue;
+        if (lowX >= x0 && highX <= x1 && lowY >= y0 && highY <= y1) {
+            out.push_back(path);
+            continue;
+        }
+        a = path;
+        for (const HalfPlane& plane : planes) {
+            clipAgainst(a, plane, b);
+            std::swap(a, b);
+            if (a.size() < 3) break;
+        }
+        if (a.size() >= 3) out.push_back(a);
+    }
+    return out;
+}
+
+}  // namespace nurbslod

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <polyclipping/clipper.hpp>
+
+namespace nurbslod {
+
+// Cuts each path of a region down to an axis-aligned rectangle by clipping it against the
+// rectangle's four half-planes in turn (Sutherland and Hodgman): a part of a path that leaves
+// a half-plane is replaced by the piece of the half-plane's line between where it leaves and
+// where it comes back. That loop lies outside the half-plane, so every point strictly inside
+// the rectangle keeps its winding number; the paths may run back and forth along the
+// rectangle's sides, which add nothing to any winding number.
+//
+// The kd-tree's walk over its leaves cuts the region node by node only to hand each leaf a
+// small piece, which the leaf then clips to its cell with the full clipper (non-zero fill): for
+// that the winding numbers inside the node are all that counts, and this costs one pass over
+// the points instead of a sweep. Cut points are rounded to the nearest integer on the line.
+ClipperLib::Paths clipKeepingWinding(const ClipperLib::Paths& region, ClipperLib::cInt x0,
+                                     ClipperLib::cInt y0, ClipperLib::cInt x1, ClipperLib::cInt y1);
+
+}  // namespace nurbslod
