@@ -98,4 +98,17 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                               bool trimmedCell = false, bool byDistance = true,
                               double pieceFraction = 1);
 
+// |S - B| at the cell's centre, S the patch and B the bilinear interpolant of its corners: a
+// lower bound of every measure in mode Guaranteed (E = S - B is 0 at the corners, which lie on
+// the sides, so spreadToEdges and spread are at least |E| anywhere). A cell above its target
+// here is split whatever its bound, which the kd-tree then does not compute.
+double centreDeviation(const BezierPatch& patch);
+
+// Where cellErrorBound in mode Guaranteed would split the cell (splitDirection, splitAt).
+struct CellSplit {
+    int direction = 0;
+    double at = 0.5;
+};
+CellSplit preferredSplit(const BezierPatch& patch);
+
 }  // namespace nurbslod

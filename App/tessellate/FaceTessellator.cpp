@@ -497,11 +497,18 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const BezierPatch piece = patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y());
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
-        const CellErrorBound bound = cellErrorBound(piece, mode_, target, trimmedCell,
-                                                    choices_.flatCellsByDistance, pieceFraction);
-        if (bound.measure(mode_, trimmedCell) <= target) {
-            leaves_[node.index].leaf = true;
-            continue;
+        // a cell whose centre is off by more than the target is split whatever its bound
+        CellSplit preferred;
+        if (mode_ == ErrorMode::Guaranteed && centreDeviation(piece) > target) {
+            preferred = preferredSplit(piece);
+        } else {
+            const CellErrorBound bound = cellErrorBound(
+                piece, mode_, target, trimmedCell, choices_.flatCellsByDistance, pieceFraction);
+            if (bound.measure(mode_, trimmedCell) <= target) {
+                leaves_[node.index].leaf = true;
+                continue;
+            }
+            preferred = {bound.splitDirection, bound.splitAt};
         }
         const bool canU = r.x1 - r.x0 >= 2, canV = r.y1 - r.y0 >= 2;
         if (node.depth >= kMaxDepth || (!canU && !canV)) {
@@ -509,7 +516,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             leaves_[node.index].leaf = true;
             continue;
         }
-        int direction = bound.splitDirection;
+        int direction = preferred.direction;
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
         // on the even columns' middle line where the cell holds two or more (the lines its
@@ -517,7 +524,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         std::optional<std::int64_t> even;
         if (frame_->even[direction]) even = (*choices_.evenColumns)[direction].evenSplit(lo, hi);
         const cInt at = even ? static_cast<cInt>(*even)
-                             : std::clamp<cInt>(lo + std::llround(bound.splitAt * double(hi - lo)),
+                             : std::clamp<cInt>(lo + std::llround(preferred.at * double(hi - lo)),
                                                 lo + 1, hi - 1);
         split(direction, node.full || !choices_.splitThroughBoundaryPoints
                              ? at

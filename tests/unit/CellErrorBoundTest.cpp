@@ -278,4 +278,41 @@ TEST(CellErrorBound, ConeColumnIsBoundedByItsBulgeNotItsTwist) {
 }
 
 }  // namespace
+// The kd-tree splits a cell whose centre is off by more than its target without computing the
+// bound: sound only if that deviation is below every measure, with any subdivision and piece
+// box, and if the split is the one the bound would choose.
+TEST(CellErrorBound, CentreDeviationIsBelowEveryMeasureAndTheSplitIsTheBounds) {
+    std::mt19937 random(23);
+    int checked = 0;
+    for (int degreeU : {1, 2, 3, 5})
+        for (int degreeV : {1, 2, 3, 4})
+            for (double noise : {0.0, 0.05, 0.3})
+                for (int trial = 0; trial < 6; ++trial) {
+                    const BezierPatch patch = randomPatch(random, degreeU, degreeV, noise);
+                    const double centre = centreDeviation(patch);
+                    EXPECT_NEAR(centre,
+                                (patch.point(0.5, 0.5) -
+                                 0.25 * (patch.pole3(0, 0) + patch.pole3(degreeU, 0) +
+                                         patch.pole3(0, degreeV) + patch.pole3(degreeU, degreeV)))
+                                    .norm(),
+                                1e-12);
+                    const CellSplit split = preferredSplit(patch);
+                    for (bool trimmedCell : {false, true})
+                        for (double fraction : {1.0, 0.5, 0.1, 0.0})
+                            for (double target : {0.0, 0.5 * centre, centre, 2 * centre}) {
+                                const CellErrorBound bound =
+                                    cellErrorBound(patch, ErrorMode::Guaranteed, target,
+                                                   trimmedCell, true, fraction);
+                                EXPECT_LE(centre,
+                                          bound.measure(ErrorMode::Guaranteed, trimmedCell) *
+                                                  (1 + 1e-12) +
+                                              1e-15);
+                                EXPECT_EQ(split.direction, bound.splitDirection);
+                                EXPECT_EQ(split.at, bound.splitAt);
+                                ++checked;
+                            }
+                }
+    EXPECT_EQ(checked, 4 * 4 * 3 * 6 * 2 * 4 * 4);
+}
+
 }  // namespace nurbslod
