@@ -68,7 +68,7 @@ PieceHalving halvingOn(const CurveOnSurface& curve, KdTreeGrid grid, int axis) {
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     const std::vector<CurveOnSurface>& uses, std::size_t use,
     const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
-    double simplification) {
+    double simplification, std::vector<CurvePoints>* points) {
     const CurveOnSurface& curve = uses.at(use);
     const auto [axis, isoLine] = cuttingAxisOf(curve);
     if (axis < 0) return std::nullopt;
@@ -78,7 +78,7 @@ std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
         if (!isoLine) return std::nullopt;
         return discretizeEdge(
             uses, approximation, simplification,
-            halvingOn(curve, KdTreeGrid(std::min(c0, c1), std::max(c0, c1), {}), axis));
+            halvingOn(curve, KdTreeGrid(std::min(c0, c1), std::max(c0, c1), {}), axis), points);
     }
     // Span borders first puts them among the points, but a span's halvings are finer than the
     // frame's where the spans are uneven (a whole cylinder's three arcs: 180 points a circle
@@ -91,11 +91,11 @@ std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
         return params.size() + grid.bordersBetween(values);
     };
     std::vector<double> bordersFirst =
-        discretizeEdge(uses, approximation, simplification, halvingOn(curve, grid, axis));
+        discretizeEdge(uses, approximation, simplification, halvingOn(curve, grid, axis), points);
     // the same lines either way; even columns are cut on the borders' intervals only
     if (!grid.hasBorders() || grid.hasEvenColumns()) return bordersFirst;
-    std::vector<double> halvings = discretizeEdge(uses, approximation, simplification,
-                                                  halvingOn(curve, grid.halvingsOnly(), axis));
+    std::vector<double> halvings = discretizeEdge(
+        uses, approximation, simplification, halvingOn(curve, grid.halvingsOnly(), axis), points);
     return withBorders(halvings) < withBorders(bordersFirst) ? halvings : bordersFirst;
 }
 

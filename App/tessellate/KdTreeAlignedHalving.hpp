@@ -33,6 +33,6 @@ std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     const std::vector<CurveOnSurface>& uses, std::size_t use,
     const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
-    double simplification);
+    double simplification, std::vector<CurvePoints>* points = nullptr);
 
 }  // namespace nurbslod

@@ -541,8 +541,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 for (const auto& curve : loop.curves) edges.insert(curve.edge);
         return edges;
     };
-    auto onKdTreeLines = [&](size_t e, const std::vector<CurveOnSurface>& curves,
-                             const ErrorBudget& edge) -> std::optional<std::vector<double>> {
+    auto onKdTreeLines =
+        [&](size_t e, const std::vector<CurveOnSurface>& curves, const ErrorBudget& edge,
+            std::vector<CurvePoints>& points) -> std::optional<std::vector<double>> {
         std::vector<size_t> order;
         if (curveUse[e] >= 0) order.push_back(static_cast<size_t>(curveUse[e]));
         for (size_t k = 0; k < curves.size(); ++k)
@@ -550,11 +551,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (size_t k : order)
             if (const auto& grids = faceGrids[uses[e][k].face])
                 if (auto params = discretizeEdgeOnKdTreeLines(
-                        curves, k, grids, edge.lineApproximation, edge.lineSimplification))
+                        curves, k, grids, edge.lineApproximation, edge.lineSimplification, &points))
                     return params;
         if (curveUse[e] < 0) return std::nullopt;
         return discretizeEdgeOnKdTreeLines(curves, curveUse[e], std::nullopt,
-                                           edge.lineApproximation, edge.lineSimplification);
+                                           edge.lineApproximation, edge.lineSimplification,
+                                           &points);
     };
     auto discretize = [&](size_t e, const ErrorBudget& edge) {
         std::vector<CurveOnSurface> curves;
@@ -571,12 +573,17 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // evenly bent curves: the points are then thinned to the chords that the whole share
         // allows on the exact curves (mergeChords). On kd-tree lines the points kept are still
         // on them.
+        // every way tried, and the merging, evaluate each of the curves' points once
+        std::vector<CurvePoints> points;
+        for (const auto& curve : curves) points.emplace_back(curve);
         std::vector<double> params;
-        if (auto aligned = onKdTreeLines(e, curves, edge))
+        if (auto aligned = onKdTreeLines(e, curves, edge, points))
             params = std::move(*aligned);
         else
-            params = discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification);
-        return mergeChords(curves, params, edge.lineApproximation, edge.lineSimplification);
+            params = discretizeEdge(curves, edge.lineApproximation, edge.lineSimplification, {},
+                                    &points);
+        return mergeChords(curves, params, edge.lineApproximation, edge.lineSimplification,
+                           &points);
     };
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1)

@@ -84,8 +84,10 @@ std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurfa
 }
 
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
-                                   double simplification, const PieceHalving& halving) {
-    std::vector<CurvePoints> curves = pointsOf(uses);
+                                   double simplification, const PieceHalving& halving,
+                                   std::vector<CurvePoints>* points) {
+    std::vector<CurvePoints> own;
+    std::vector<CurvePoints>& curves = points ? *points : (own = pointsOf(uses));
     std::vector<double> params{0.0};
     // depth-first over [s0, s1] so that the parameters come out in increasing order
     std::vector<std::pair<std::pair<double, double>, int>> stack{{{0.0, 1.0}, 0}};
@@ -111,9 +113,9 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
 
     // Douglas-Peucker on the 3D polylines of all uses at once: a point goes only if every
     // face's polyline stays within `simplification` of the simplified one.
-    std::vector<std::vector<Point3>> points(uses.size());
+    std::vector<std::vector<Point3>> polylines(uses.size());
     for (size_t k = 0; k < uses.size(); ++k)
-        for (double s : params) points[k].push_back(curves[k](s));
+        for (double s : params) polylines[k].push_back(curves[k](s));
     std::vector<char> keep(params.size(), 0);
     keep.front() = keep.back() = 1;
     std::vector<std::pair<size_t, size_t>> ranges{{0, params.size() - 1}};
@@ -125,13 +127,13 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
         size_t worstIndex = a + 1;
         for (size_t i = a + 1; i < b; ++i) {
             double d = 0;
-            for (const auto& polyline : points)
+            for (const auto& polyline : polylines)
                 d = std::max(d, distanceToSegment(polyline[i], polyline[a], polyline[b]));
             if (d > worst) worst = d, worstIndex = i;
         }
         // a closed edge (start == end) has a zero chord; never collapse it below 3 points
         bool closedChord = false;
-        for (const auto& polyline : points)
+        for (const auto& polyline : polylines)
             closedChord |= (polyline[a] - polyline[b]).norm() <= 1e-12;
         if (worst > simplification || (closedChord && a == 0 && b == params.size() - 1)) {
             keep[worstIndex] = 1;
@@ -147,9 +149,10 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
 
 std::vector<double> mergeChords(const std::vector<CurveOnSurface>& uses,
                                 const std::vector<double>& params, double approximation,
-                                double simplification) {
+                                double simplification, std::vector<CurvePoints>* points) {
     if (params.size() < 3) return params;
-    std::vector<CurvePoints> curves = pointsOf(uses);
+    std::vector<CurvePoints> own;
+    std::vector<CurvePoints>& curves = points ? *points : (own = pointsOf(uses));
     const double bound = approximation + std::max(0.0, simplification);
     std::vector<double> merged{params.front()};
     for (size_t i = 0; i + 1 < params.size();) {

@@ -15,8 +15,11 @@ namespace nurbslod {
 // `halving`, where given, says where a piece [s0, s1] that is not flat enough is split (by
 // default in the middle of s): ModelTessellator puts the points on a face's kd-tree lines.
 using PieceHalving = std::function<double(double s0, double s1)>;
+// `points`, where given, are the uses' points already evaluated (one per use, in order): an edge
+// discretised more than one way, then merged, evaluates each point once.
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
-                                   double simplification, const PieceHalving& halving = {});
+                                   double simplification, const PieceHalving& halving = {},
+                                   std::vector<CurvePoints>* points = nullptr);
 
 // The same bound (`approximation` + `simplification` from every face's curve) reached with the
 // longest chords it allows: from each point the chord is stretched (doubling, then bisection)
@@ -34,6 +37,6 @@ std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurfa
 // only points they chose.
 std::vector<double> mergeChords(const std::vector<CurveOnSurface>& uses,
                                 const std::vector<double>& params, double approximation,
-                                double simplification);
+                                double simplification, std::vector<CurvePoints>* points = nullptr);
 
 }  // namespace nurbslod

@@ -83,5 +83,26 @@ TEST_F(QuarterCircleOnPlane, ChordsAtTheBoundStay) {
     EXPECT_EQ(mergeChords(uses, ends, 0.75 * share, 0.25 * share), ends);
 }
 
+// The points evaluated for the subdivision serve the merging (and a second subdivision) where
+// they are handed on: the same parameters, fewer evaluations.
+TEST_F(QuarterCircleOnPlane, SharedPointsGiveTheSameChordsWithFewerEvaluations) {
+    for (const double share : {1e-3, 1e-5}) {
+        const double approximation = 0.75 * share, simplification = 0.25 * share;
+        const auto halved = discretizeEdge(uses, approximation, simplification);
+        const auto merged = mergeChords(uses, halved, approximation, simplification);
+        std::size_t separate = 0, shared = 0;
+        {
+            std::vector<CurvePoints> first{CurvePoints(uses[0], &separate)};
+            discretizeEdge(uses, approximation, simplification, {}, &first);
+            std::vector<CurvePoints> second{CurvePoints(uses[0], &separate)};
+            mergeChords(uses, halved, approximation, simplification, &second);
+        }
+        std::vector<CurvePoints> points{CurvePoints(uses[0], &shared)};
+        EXPECT_EQ(discretizeEdge(uses, approximation, simplification, {}, &points), halved);
+        EXPECT_EQ(mergeChords(uses, halved, approximation, simplification, &points), merged);
+        EXPECT_LT(shared, separate) << "share " << share;
+    }
+}
+
 }  // namespace
 }  // namespace nurbslod
