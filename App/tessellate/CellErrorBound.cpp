@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/BasisFunctions.hpp"
+
 namespace nurbslod {
 
 namespace {
@@ -180,19 +182,23 @@ CellSplit splitOfNet(const std::vector<Point3>& net, int m, int n, const Point3&
 }
 
 // The net point farthest from the bilinear patch of the corners: where to split.
-void farthestFromBilinear(const std::vector<Point3>& net, int m, int n, const Point3& c00,
-                          const Point3& c10, const Point3& c01, const Point3& c11, int& farI,
-                          int& farJ, double& farthest) {
-    farthest = -1;
-    farI = farJ = 0;
+struct FarthestNetPoint {
+    double distance = -1;
+    int i = 0, j = 0;
+};
+FarthestNetPoint farthestFromBilinear(const std::vector<Point3>& net, int m, int n,
+                                      const Point3& c00, const Point3& c10, const Point3& c01,
+                                      const Point3& c11) {
+    FarthestNetPoint farthest;
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) {
             const double s = static_cast<double>(i) / m, t = static_cast<double>(j) / n;
             const Point3 bilinear =
                 (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
             const double d = (net[i * (n + 1) + j] - bilinear).norm();
-            if (d > farthest) farthest = d, farI = i, farJ = j;
+            if (d > farthest.distance) farthest = {d, i, j};
         }
+    return farthest;
 }
 
 // Subdivision of E pays only near the target: far above it the cell is split anyway.
@@ -230,9 +236,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                                        : samples[(2 * i) * (2 * n + 1) + 2 * j];
 
     // the net point farthest from the bilinear patch decides where to split
-    double farthest = -1;
-    int farI = 0, farJ = 0;
-    farthestFromBilinear(net, m, n, c00, c10, c01, c11, farI, farJ, farthest);
+    const FarthestNetPoint farthest = farthestFromBilinear(net, m, n, c00, c10, c01, c11);
 
     if (mode == ErrorMode::Approximate) {
         // The paper's measure samples the surface at the control points' parameters only,
@@ -246,7 +250,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                 const double t = static_cast<double>(j) / (2 * n);
                 between = std::max(between, (samples[i * (2 * n + 1) + j] - bilinear(s, t)).norm());
             }
-        bound.interior = std::max(farthest, between);
+        bound.interior = std::max(farthest.distance, between);
         bound.boundary = 0;  // the approximate measure samples the edges with the interior
         bound.spreadToEdges = bound.spread = bound.interior;
     } else {
@@ -277,15 +281,11 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
         }
     }
 
-    const CellSplit split = splitOfNet(net, m, n, c00, c10, c01, c11, farI, farJ);
+    const CellSplit split = splitOfNet(net, m, n, c00, c10, c01, c11, farthest.i, farthest.j);
     bound.splitDirection = split.direction;
     bound.splitAt = split.at;
     return bound;
 }
-
-}  // namespace nurbslod
-
-namespace nurbslod {
 
 double centreDeviation(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
@@ -294,9 +294,9 @@ double centreDeviation(const BezierPatch& patch) {
         values[0] = std::ldexp(1.0, -degree);
         for (int k = 1; k <= degree; ++k) values[k] = values[k - 1] * (degree - k + 1) / k;
     };
-    std::vector<double> bu(m + 1), bv(n + 1);
-    half(m, bu.data());
-    half(n, bv.data());
+    double bu[kMaxDegree + 1], bv[kMaxDegree + 1];
+    half(m, bu);
+    half(n, bv);
     HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) sum += bu[i] * bv[j] * patch.pole(i, j);
@@ -311,10 +311,8 @@ CellSplit preferredSplit(const BezierPatch& patch) {
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) net[i * (n + 1) + j] = patch.pole3(i, j);
     const Point3 c00 = net[0], c10 = net[m * (n + 1)], c01 = net[n], c11 = net[m * (n + 1) + n];
-    double farthest = -1;
-    int farI = 0, farJ = 0;
-    farthestFromBilinear(net, m, n, c00, c10, c01, c11, farI, farJ, farthest);
-    return splitOfNet(net, m, n, c00, c10, c01, c11, farI, farJ);
+    const FarthestNetPoint farthest = farthestFromBilinear(net, m, n, c00, c10, c01, c11);
+    return splitOfNet(net, m, n, c00, c10, c01, c11, farthest.i, farthest.j);
 }
 
 }  // namespace nurbslod

@@ -574,8 +574,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         // allows on the exact curves (mergeChords). On kd-tree lines the points kept are still
         // on them.
         // every way tried, and the merging, evaluate each of the curves' points once
-        std::vector<CurvePoints> points;
-        for (const auto& curve : curves) points.emplace_back(curve);
+        std::vector<CurvePoints> points = curvePointsOf(curves);
         std::vector<double> params;
         if (auto aligned = onKdTreeLines(e, curves, edge, points))
             params = std::move(*aligned);

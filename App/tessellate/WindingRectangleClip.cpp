@@ -1,6 +1,7 @@
 #include "tessellate/WindingRectangleClip.hpp"
 
-#include <cstdint>
+#include <algorithm>
+#include <utility>
 
 namespace nurbslod {
 
@@ -46,13 +47,10 @@ void clipAgainst(const Path& in, const HalfPlane& plane, Path& out) {
     for (const IntPoint& current : in) {
         const bool currentInside = plane.inside(current);
         if (currentInside != previousInside) {
-            // a point already on the line is itself the crossing
-            if (currentInside && plane.along(current) == plane.bound)
-                ;
-            else if (previousInside && plane.along(previous) == plane.bound)
-                ;
-            else
-                push(previousInside ? plane.cut(previous, current) : plane.cut(current, previous));
+            const IntPoint& inner = currentInside ? current : previous;
+            const IntPoint& outer = currentInside ? previous : current;
+            // an inside point already on the line is itself the crossing
+            if (plane.along(inner) != plane.bound) push(plane.cut(inner, outer));
         }
         if (currentInside) push(current);
         previous = current;

@@ -61,9 +61,6 @@ Point3 bezierPoint(const ControlPoints& control, int n, double t) {
     return work[0];
 }
 
-}  // namespace
-
-namespace {
 // A parameter's bits, mixed (the standard library hashes a double byte by byte, a tenth of the
 // edges' subdivision time).
 std::size_t slotHash(std::uint64_t bits) {
@@ -72,6 +69,7 @@ std::size_t slotHash(std::uint64_t bits) {
     bits ^= bits >> 33;
     return static_cast<std::size_t>(bits);
 }
+
 }  // namespace
 
 Point3 CurvePoints::operator()(double s) {

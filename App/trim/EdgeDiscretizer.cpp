@@ -31,17 +31,17 @@ bool flatEnough(std::vector<CurvePoints>& uses, double s0, double s1, double eps
     return true;
 }
 
-std::vector<CurvePoints> pointsOf(const std::vector<CurveOnSurface>& uses) {
+}  // namespace
+
+std::vector<CurvePoints> curvePointsOf(const std::vector<CurveOnSurface>& uses) {
     std::vector<CurvePoints> points;
     for (const auto& use : uses) points.emplace_back(use);
     return points;
 }
 
-}  // namespace
-
 std::vector<double> discretizeEdgeByLongestChords(const std::vector<CurveOnSurface>& uses,
                                                   double approximation, double simplification) {
-    std::vector<CurvePoints> curves = pointsOf(uses);
+    std::vector<CurvePoints> curves = curvePointsOf(uses);
     const double bound = approximation + std::max(0.0, simplification);
     const double shortest = std::ldexp(1.0, -kMaxDepth);
     std::vector<double> params{0.0};
@@ -87,7 +87,7 @@ std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, doub
                                    double simplification, const PieceHalving& halving,
                                    std::vector<CurvePoints>* points) {
     std::vector<CurvePoints> own;
-    std::vector<CurvePoints>& curves = points ? *points : (own = pointsOf(uses));
+    std::vector<CurvePoints>& curves = points ? *points : (own = curvePointsOf(uses));
     std::vector<double> params{0.0};
     // depth-first over [s0, s1] so that the parameters come out in increasing order
     std::vector<std::pair<std::pair<double, double>, int>> stack{{{0.0, 1.0}, 0}};
@@ -152,7 +152,7 @@ std::vector<double> mergeChords(const std::vector<CurveOnSurface>& uses,
                                 double simplification, std::vector<CurvePoints>* points) {
     if (params.size() < 3) return params;
     std::vector<CurvePoints> own;
-    std::vector<CurvePoints>& curves = points ? *points : (own = pointsOf(uses));
+    std::vector<CurvePoints>& curves = points ? *points : (own = curvePointsOf(uses));
     const double bound = approximation + std::max(0.0, simplification);
     std::vector<double> merged{params.front()};
     for (size_t i = 0; i + 1 < params.size();) {

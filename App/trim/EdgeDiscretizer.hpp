@@ -7,6 +7,9 @@
 
 namespace nurbslod {
 
+// One cache of evaluated points per use, in order: what the functions below take as `points`.
+std::vector<CurvePoints> curvePointsOf(const std::vector<CurveOnSurface>& uses);
+
 // Discretises one B-rep edge for all the faces that use it (its curves on their surfaces), in
 // the edge's normalised parameter s in [0, 1], so that every face's 3D curve stays within
 // `approximation` of its chords (midpoint subdivision under the chord bound, paper section 5.1)
@@ -15,8 +18,8 @@ namespace nurbslod {
 // `halving`, where given, says where a piece [s0, s1] that is not flat enough is split (by
 // default in the middle of s): ModelTessellator puts the points on a face's kd-tree lines.
 using PieceHalving = std::function<double(double s0, double s1)>;
-// `points`, where given, are the uses' points already evaluated (one per use, in order): an edge
-// discretised more than one way, then merged, evaluates each point once.
+// `points`, where given (curvePointsOf(uses)), are the uses' points already evaluated (one per use,
+// in order): an edge discretised more than one way, then merged, evaluates each point once.
 std::vector<double> discretizeEdge(const std::vector<CurveOnSurface>& uses, double approximation,
                                    double simplification, const PieceHalving& halving = {},
                                    std::vector<CurvePoints>* points = nullptr);
