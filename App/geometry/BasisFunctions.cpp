@@ -10,10 +10,11 @@ void basisFunctions(const KnotVector& knots, int span, double t, double* out) {
     for (int j = 1; j <= p; ++j) {
         left[j] = t - U[span + 1 - j];
         right[j] = U[span + j] - t;
+        // right[r + 1] + left[j - r] is the knot difference U[span + r + 1] - U[span + 1 - j + r]
+        const double* reciprocal = knots.reciprocalDifferences(j) + (span + 1 - j);
         double saved = 0.0;
         for (int r = 0; r < j; ++r) {
-            const double denominator = right[r + 1] + left[j - r];
-            const double temp = denominator != 0.0 ? out[r] / denominator : 0.0;
+            const double temp = out[r] * reciprocal[r];
             out[r] = saved + right[r + 1] * temp;
             saved = left[j - r] * temp;
         }

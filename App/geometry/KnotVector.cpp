@@ -6,7 +6,20 @@
 namespace nurbslod {
 
 KnotVector::KnotVector(int degree, std::vector<double> knots)
-    : degree_(degree), knots_(std::move(knots)) {}
+    : degree_(degree), knots_(std::move(knots)) {
+    // Rows for degrees past what problem() accepts are not needed: such a vector is refused
+    // before anything evaluates on it.
+    const int rows = std::clamp(degree_, 0, 40);
+    const size_t m = knots_.size();
+    reciprocals_.assign(static_cast<size_t>(rows) * m, 0.0);
+    for (int j = 1; j <= rows; ++j) {
+        double* row = &reciprocals_[static_cast<size_t>(j - 1) * m];
+        for (size_t i = 0; i + j < m; ++i) {
+            const double difference = knots_[i + j] - knots_[i];
+            row[i] = difference != 0.0 ? 1.0 / difference : 0.0;
+        }
+    }
+}
 
 int KnotVector::findSpan(double t) const {
     const int n = controlPointCount() - 1;

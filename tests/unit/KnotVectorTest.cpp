@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geometry/BasisFunctions.hpp"
 #include "geometry/KnotVector.hpp"
 
 using nurbslod::KnotVector;
@@ -24,4 +25,55 @@ TEST(KnotVector, NamesWhatIsWrong) {
     EXPECT_NE(KnotVector(1, {0, 0, std::nan(""), 1, 1}).problem(3)->find("not finite"),
               std::string::npos);
     EXPECT_NE(KnotVector(1, {1, 1, 1, 1}).problem(2)->find("empty"), std::string::npos);
+}
+
+namespace {
+
+// The Cox-de Boor recursion as defined (NURBS Book, equation 2.5), with 0/0 = 0; the degree-0
+// function is 1 on the span findSpan chose for t, which settles t on a knot.
+double coxDeBoor(const std::vector<double>& U, int i, int p, double t, int span) {
+    if (p == 0) return i == span ? 1.0 : 0.0;
+    double value = 0.0;
+    if (U[i + p] != U[i]) value += (t - U[i]) / (U[i + p] - U[i]) * coxDeBoor(U, i, p - 1, t, span);
+    if (U[i + p + 1] != U[i + 1])
+        value +=
+            (U[i + p + 1] - t) / (U[i + p + 1] - U[i + 1]) * coxDeBoor(U, i + 1, p - 1, t, span);
+    return value;
+}
+
+}  // namespace
+
+TEST(KnotVector, BasisFunctionsFromKeptReciprocalsMatchTheRecursion) {
+    // Clamped, with an interior knot of full multiplicity, and unclamped with equal steps: the
+    // kept reciprocals must be 0 exactly where knots repeat, and the values those of the
+    // recursion everywhere.
+    const std::vector<std::pair<int, std::vector<double>>> cases = {
+        {3, {0, 0, 0, 0, 0.2, 0.5, 0.5, 0.5, 0.9, 1, 1, 1, 1}},
+        {2, {-3, -2, -1, 0, 1.5, 2, 3, 4}},
+        {5, {0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1}},
+        {1, {0, 0, 0.25, 0.25, 1, 1}},
+    };
+    for (const auto& [p, U] : cases) {
+        const KnotVector k(p, U);
+        const int n = k.controlPointCount();
+        for (int j = 1; j <= p; ++j)
+            for (size_t i = 0; i + j < U.size(); ++i) {
+                const double d = U[i + j] - U[i];
+                EXPECT_EQ(k.reciprocalDifferences(j)[i], d != 0.0 ? 1.0 / d : 0.0);
+            }
+        for (int step = 0; step <= 200; ++step) {
+            const double t = k.first() + (k.last() - k.first()) * step / 200.0;
+            const int span = k.findSpan(t);
+            double N[nurbslod::kMaxDegree + 1];
+            nurbslod::basisFunctions(k, span, t, N);
+            double sum = 0.0;
+            for (int r = 0; r <= p; ++r) {
+                EXPECT_NEAR(N[r], coxDeBoor(U, span - p + r, p, t, span), 1e-14)
+                    << "degree " << p << " t " << t << " r " << r;
+                sum += N[r];
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-14);
+            EXPECT_LT(span, n);
+        }
+    }
 }
