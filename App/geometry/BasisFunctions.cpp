@@ -2,9 +2,41 @@
 
 namespace nurbslod {
 
+namespace {
+
+// Binomial coefficients C(p, k) for p up to kMaxDegree, exact in a double (C(40, 20) < 2^53).
+struct BinomialTable {
+    double value[kMaxDegree + 1][kMaxDegree + 1] = {};
+    constexpr BinomialTable() {
+        for (int p = 0; p <= kMaxDegree; ++p) {
+            value[p][0] = value[p][p] = 1;
+            for (int k = 1; k < p; ++k) value[p][k] = value[p - 1][k - 1] + value[p - 1][k];
+        }
+    }
+};
+constexpr BinomialTable kBinomial;
+
+}  // namespace
+
 void basisFunctions(const KnotVector& knots, int span, double t, double* out) {
     const int p = knots.degree();
     const auto& U = knots.knots();
+    if (knots.isBezierSpan(span)) {
+        // The Bernstein polynomials C(p, k) x^k (1 - x)^(p - k) from two tables of powers:
+        // O(p) products where the triangular scheme below takes O(p^2) (the surface points of
+        // the edges' chord bounds on degree-16 patches spent most of their time there). Both
+        // x and 1 - x are taken from their own knot, so neither loses digits near its end.
+        const double reciprocal = knots.reciprocalDifferences(1)[span];
+        const double x = (t - U[span]) * reciprocal, y = (U[span + 1] - t) * reciprocal;
+        double powerX[kMaxDegree + 1], powerY[kMaxDegree + 1];
+        powerX[0] = powerY[0] = 1.0;
+        for (int k = 1; k <= p; ++k) {
+            powerX[k] = powerX[k - 1] * x;
+            powerY[k] = powerY[k - 1] * y;
+        }
+        for (int k = 0; k <= p; ++k) out[k] = kBinomial.value[p][k] * powerX[k] * powerY[p - k];
+        return;
+    }
     double left[kMaxDegree + 1], right[kMaxDegree + 1];
     out[0] = 1.0;
     for (int j = 1; j <= p; ++j) {

@@ -19,6 +19,13 @@ KnotVector::KnotVector(int degree, std::vector<double> knots)
             row[i] = difference != 0.0 ? 1.0 / difference : 0.0;
         }
     }
+    bezierSpans_.assign(m, 0);
+    for (int i = rows > 0 ? rows - 1 : 0; rows > 0 && i + rows < static_cast<int>(m); ++i) {
+        bool bezier = knots_[i + 1] > knots_[i];
+        for (int k = 1; k < rows && bezier; ++k)
+            bezier = knots_[i - k] == knots_[i] && knots_[i + 1 + k] == knots_[i + 1];
+        bezierSpans_[i] = bezier;
+    }
 }
 
 int KnotVector::findSpan(double t) const {

@@ -37,10 +37,17 @@ public:
         return &reciprocals_[static_cast<size_t>(j - 1) * knots_.size()];
     }
 
+    // Whether span i is a Bezier segment: the degree knots on each side of it equal its ends,
+    // so that its basis functions are the Bernstein polynomials in (t - knots[i]) /
+    // (knots[i + 1] - knots[i]). Every span of a single-segment patch, and of most patches
+    // that files carry (Bezier pieces of degree 5 to 16 on the corpus), is one.
+    bool isBezierSpan(int i) const { return bezierSpans_[static_cast<size_t>(i)] != 0; }
+
 private:
     int degree_ = 0;
     std::vector<double> knots_;
     std::vector<double> reciprocals_;
+    std::vector<char> bezierSpans_;
 };
 
 }  // namespace nurbslod

@@ -44,16 +44,24 @@ double coxDeBoor(const std::vector<double>& U, int i, int p, double t, int span)
 }  // namespace
 
 TEST(KnotVector, BasisFunctionsFromKeptReciprocalsMatchTheRecursion) {
-    // Clamped, with an interior knot of full multiplicity, and unclamped with equal steps: the
-    // kept reciprocals must be 0 exactly where knots repeat, and the values those of the
-    // recursion everywhere.
+    // Clamped, with an interior knot of full multiplicity, and unclamped with equal steps; and
+    // Bezier segments, of degree 1, 2 (a circle's knots), 5 and 16: the kept reciprocals must be
+    // 0 exactly where knots repeat, and the values those of the recursion everywhere, on the
+    // Bernstein shortcut as on the triangular scheme.
     const std::vector<std::pair<int, std::vector<double>>> cases = {
         {3, {0, 0, 0, 0, 0.2, 0.5, 0.5, 0.5, 0.9, 1, 1, 1, 1}},
         {2, {-3, -2, -1, 0, 1.5, 2, 3, 4}},
         {5, {0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1}},
         {1, {0, 0, 0.25, 0.25, 1, 1}},
+        {2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 1, 1, 1}},
+        {16, std::vector<double>(17, -2.0)},
     };
-    for (const auto& [p, U] : cases) {
+    auto withEnd = [](std::vector<double> U) {
+        U.insert(U.end(), 17, 3.0);
+        return U;
+    };
+    for (auto [p, U] : cases) {
+        if (p == 16) U = withEnd(U);
         const KnotVector k(p, U);
         const int n = k.controlPointCount();
         for (int j = 1; j <= p; ++j)
@@ -76,4 +84,16 @@ TEST(KnotVector, BasisFunctionsFromKeptReciprocalsMatchTheRecursion) {
             EXPECT_LT(span, n);
         }
     }
+}
+
+TEST(KnotVector, TellsBezierSpans) {
+    const KnotVector circle(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 1, 1, 1});
+    EXPECT_TRUE(circle.isBezierSpan(2));
+    EXPECT_TRUE(circle.isBezierSpan(4));
+    EXPECT_TRUE(circle.isBezierSpan(6));
+    EXPECT_FALSE(circle.isBezierSpan(3));  // empty
+    const KnotVector cubic(3, {0, 0, 0, 0, 0.2, 0.5, 0.5, 0.5, 0.9, 1, 1, 1, 1});
+    for (int span = 3; span <= 8; ++span) EXPECT_FALSE(cubic.isBezierSpan(span)) << span;
+    const KnotVector unclamped(2, {-3, -2, -1, 0, 1.5, 2, 3, 4});
+    for (int span = 2; span <= 4; ++span) EXPECT_FALSE(unclamped.isBezierSpan(span)) << span;
 }
