@@ -25,6 +25,7 @@
 #include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/KdTreeAlignedHalving.hpp"
+#include "tessellate/PointWeld.hpp"
 #include "tessellate/SurfaceMeeting.hpp"
 #include "tessellate/SurfaceProjection.hpp"
 #include "trim/EdgeDiscretizer.hpp"
@@ -1236,36 +1237,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // and two B-rep vertices a sloppy file puts that close (trj7_b1-ec-214.stp: 0.0008 apart,
     // 0.002 T at relative 1e-3) leave a crack where one face ends at each. Moving a point by at
     // most 1e-2 T moves its triangles by no more, within the budget's slack.
-    const double quantum = 1e-2 * options.tolerance;
-    std::unordered_map<std::int64_t, std::uint32_t> cellOfPoint;
-    auto cellKey = [&](const Point3& p, int dx, int dy, int dz) {
-        const auto x = (static_cast<std::int64_t>(std::floor(p.x() / quantum)) + dx) & 0x1fffff;
-        const auto y = (static_cast<std::int64_t>(std::floor(p.y() / quantum)) + dy) & 0x1fffff;
-        const auto z = (static_cast<std::int64_t>(std::floor(p.z() / quantum)) + dz) & 0x1fffff;
-        return (x << 42) | (y << 21) | z;
-    };
-    std::vector<std::uint32_t> remap(mesh.positions.size());
-    std::vector<Point3> kept;
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        if (!used[i]) continue;
-        const Point3& p = mesh.positions[i];
-        std::int64_t found = -1;
-        // the point's grid cell and its neighbours: two close points may straddle a cell border
-        for (int dx = -1; dx <= 1 && found < 0; ++dx)
-            for (int dy = -1; dy <= 1 && found < 0; ++dy)
-                for (int dz = -1; dz <= 1 && found < 0; ++dz)
-                    if (auto it = cellOfPoint.find(cellKey(p, dx, dy, dz));
-                        it != cellOfPoint.end() && (kept[it->second] - p).norm() <= quantum)
-                        found = it->second;
-        if (found >= 0) {
-            remap[i] = static_cast<std::uint32_t>(found);
-            continue;
-        }
-        remap[i] = static_cast<std::uint32_t>(kept.size());
-        cellOfPoint.emplace(cellKey(p, 0, 0, 0), remap[i]);
-        kept.push_back(p);
-    }
-    mesh.positions = std::move(kept);
+    WeldedPoints welded = weldPoints(mesh.positions, used, 1e-2 * options.tolerance);
+    const std::vector<std::uint32_t>& remap = welded.remap;
+    mesh.positions = std::move(welded.kept);
     std::size_t out = 0;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         auto tri = mesh.triangles[t];
