@@ -24,7 +24,35 @@ void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t) {
             pts[i * stride] = (1 - t) * pts[i * stride] + t * pts[(i + 1) * stride];
 }
 
+// Both halves at 1/2 from one de Casteljau triangle: the left half into pts, the right half
+// into right (same stride). Each triangle value is (1 - t) left + t right of the level above,
+// the expression of keepLeft and keepRight, so the halves are theirs to the last bit.
+void splitInHalves(HomogeneousPoint3* pts, HomogeneousPoint3* right, int degree, int stride) {
+    constexpr double t = 0.5;
+    // keepRight on a copy in `right`, taking the left half's points off its first slot
+    for (int i = 0; i <= degree; ++i) right[i * stride] = pts[i * stride];
+    for (int level = 1; level <= degree; ++level) {
+        for (int i = 0; i <= degree - level; ++i)
+            right[i * stride] = (1 - t) * right[i * stride] + t * right[(i + 1) * stride];
+        pts[level * stride] = right[0];
+    }
+}
+
 }  // namespace
+
+std::array<BezierPatch, 4> BezierPatch::quarters() const {
+    const int stride = degreeV_ + 1;
+    // u first, as restricted() cuts: the halves along u, then each half along v
+    BezierPatch lowU = *this, highU = *this;
+    for (int j = 0; j <= degreeV_; ++j)
+        splitInHalves(&lowU.poles_[j], &highU.poles_[j], degreeU_, stride);
+    std::array<BezierPatch, 4> out{lowU, lowU, highU, highU};
+    for (int half = 0; half < 2; ++half)
+        for (int i = 0; i <= degreeU_; ++i)
+            splitInHalves(&out[2 * half].poles_[i * stride], &out[2 * half + 1].poles_[i * stride],
+                          degreeV_, 1);
+    return out;
+}
 
 void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b) {
     if (b < 1.0) keepLeft(pts, degree, stride, b);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "geometry/Point.hpp"
@@ -22,6 +23,11 @@ public:
     // The patch restricted to [u0,u1] x [v0,v1] (local parameters), by de Casteljau
     // subdivision: an exact reparameterisation, so its control net bounds that piece.
     BezierPatch restricted(double u0, double u1, double v0, double v1) const;
+
+    // The four quarters [0, 1/2] x [0, 1/2], [0, 1/2] x [1/2, 1], [1/2, 1] x [0, 1/2] and
+    // [1/2, 1] x [1/2, 1], the same numbers as restricted() gives each: one de Casteljau
+    // triangle yields both halves, so three passes do what four restrictions do in eight.
+    std::array<BezierPatch, 4> quarters() const;
 
     // Point at local parameters (s, t), by de Casteljau.
     Point3 point(double s, double t) const;

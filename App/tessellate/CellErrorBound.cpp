@@ -1,6 +1,7 @@
 #include "tessellate/CellErrorBound.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -116,12 +117,15 @@ DifferenceRange rangeOf(const BezierPatch& difference, int pieces, bool trimmedC
     points.clear();
     sidePoints.clear();
     DifferenceRange range;
+    std::array<BezierPatch, 4> quarters;
+    if (pieces == 2) quarters = difference.quarters();
     for (int a = 0; a < pieces; ++a)
         for (int b = 0; b < pieces; ++b) {
             const BezierPatch part =
-                pieces == 1 ? difference
-                            : difference.restricted(double(a) / pieces, double(a + 1) / pieces,
-                                                    double(b) / pieces, double(b + 1) / pieces);
+                pieces == 1   ? difference
+                : pieces == 2 ? std::move(quarters[2 * a + b])
+                              : difference.restricted(double(a) / pieces, double(a + 1) / pieces,
+                                                      double(b) / pieces, double(b + 1) / pieces);
             for (int i = 0; i <= degreeU; ++i)
                 for (int j = 0; j <= degreeV; ++j) {
                     const Point3 p = part.pole3(i, j);

@@ -41,6 +41,30 @@ TEST(BezierPatch, GridPointsAreDeCasteljauPoints) {
 }
 
 // A grid of one parameter per direction is the corner (0, 0).
+// The quarters from shared de Casteljau triangles are restricted()'s quarters to the last bit:
+// the kd-tree's cell bounds must not change with the way they are cut.
+TEST(BezierPatch, QuartersAreTheRestrictedQuartersExactly) {
+    std::mt19937 random(11);
+    for (int degreeU = 1; degreeU <= 16; degreeU += 3)
+        for (int degreeV = 1; degreeV <= 14; degreeV += 4) {
+            const BezierPatch patch = randomRationalPatch(random, degreeU, degreeV);
+            const auto quarters = patch.quarters();
+            for (int a = 0; a < 2; ++a)
+                for (int b = 0; b < 2; ++b) {
+                    const BezierPatch expected =
+                        patch.restricted(0.5 * a, 0.5 * (a + 1), 0.5 * b, 0.5 * (b + 1));
+                    const BezierPatch& quarter = quarters[2 * a + b];
+                    ASSERT_EQ(quarter.degreeU(), degreeU);
+                    ASSERT_EQ(quarter.degreeV(), degreeV);
+                    for (int i = 0; i <= degreeU; ++i)
+                        for (int j = 0; j <= degreeV; ++j)
+                            EXPECT_EQ(quarter.pole(i, j), expected.pole(i, j))
+                                << degreeU << "x" << degreeV << " quarter " << a << b << " pole "
+                                << i << "," << j;
+                }
+        }
+}
+
 TEST(BezierPatch, GridOfNoSegmentsIsTheFirstCorner) {
     std::mt19937 random(3);
     const BezierPatch patch = randomRationalPatch(random, 3, 2);
