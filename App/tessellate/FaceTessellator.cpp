@@ -904,13 +904,18 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         return atPole;
     };
 
+    // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
+    std::vector<std::uint32_t> ids;
+    std::vector<std::vector<IntegerPoint2>> integerRings;
     forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
         ++mesh.cells;
         for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines)) {
-            std::vector<std::uint32_t> ids;
-            std::vector<std::vector<IntegerPoint2>> integerRings;
-            for (const Path& ring : rings) {
-                std::vector<IntegerPoint2> integerRing;
+            ids.clear();
+            integerRings.resize(rings.size());
+            for (std::size_t r = 0; r < rings.size(); ++r) {
+                const Path& ring = rings[r];
+                std::vector<IntegerPoint2>& integerRing = integerRings[r];
+                integerRing.clear();
                 for (std::size_t i = 0; i < ring.size(); ++i) {
                     const IntPoint& p = ring[i];
                     if (ring.size() > 3 && !lines.isCorner(p) && index.isCollinearOnChord(ring, i))
@@ -918,7 +923,6 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                     integerRing.push_back({p.X, p.Y});
                     ids.push_back(resolve(p));
                 }
-                integerRings.push_back(std::move(integerRing));
             }
             if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
                 // a whole cell without neighbours' points: its two triangles (section 7)
