@@ -251,13 +251,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             std::vector<CurveOnSurface> curves;
             for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
             double farthestOffset = 0, nearestOffset = 0;
+            std::vector<Point3> own(curves.size());
+            std::vector<Point2> start(curves.size());
             for (int i = 1; i < samples && farthestOffset < largestGap; ++i) {
                 const double s = double(i) / samples;
-                std::vector<Point3> own;
-                std::vector<Point2> start;
-                for (const auto& c : curves) {
-                    own.push_back(c.point(s));
-                    start.push_back(c.uv(s));
+                for (size_t k = 0; k < curves.size(); ++k) {
+                    start[k] = curves[k].uv(s);
+                    own[k] = curves[k].surface().point(start[k].x(), start[k].y());
                 }
                 if (spread(own) <= budget.shareGap) {  // shared as before, midway
                     nearestOffset = std::max(nearestOffset, farthest(own, centroid(own)));
