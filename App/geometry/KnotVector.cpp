@@ -26,9 +26,17 @@ KnotVector::KnotVector(int degree, std::vector<double> knots)
             bezier = knots_[i - k] == knots_[i] && knots_[i + 1 + k] == knots_[i + 1];
         bezierSpans_[i] = bezier;
     }
+    if (degree_ >= 0 && m >= static_cast<size_t>(2 * degree_ + 2)) {
+        const int n = static_cast<int>(m) - degree_ - 1;  // control points
+        int spans = 0, span = -1;
+        for (int i = degree_; i < n; ++i)
+            if (knots_[i + 1] > knots_[i]) ++spans, span = i;
+        if (spans == 1) onlySpan_ = span;
+    }
 }
 
 int KnotVector::findSpan(double t) const {
+    if (onlySpan_ >= 0) return onlySpan_;
     const int n = controlPointCount() - 1;
     if (t >= knots_[n + 1]) {
         // last non-empty span

@@ -48,6 +48,9 @@ private:
     std::vector<double> knots_;
     std::vector<double> reciprocals_;
     std::vector<char> bezierSpans_;
+    // the span findSpan returns for every t where there is only one (a single Bezier segment,
+    // as most of the corpus's patches and trimming curves are), else -1
+    int onlySpan_ = -1;
 };
 
 }  // namespace nurbslod

@@ -18,6 +18,15 @@ TEST(KnotVector, FindsSpansAndBreakpoints) {
     EXPECT_FALSE(k.problem(4).has_value());
 }
 
+TEST(KnotVector, ASingleSpanIsTheSpanOfEveryParameter) {
+    const KnotVector bezier(2, {0, 0, 0, 1, 1, 1});
+    for (double t : {-5.0, 0.0, 0.5, 1.0, 7.0}) EXPECT_EQ(bezier.findSpan(t), 2) << t;
+    const KnotVector unclamped(1, {0, 1, 2, 3});  // two control points: one span, [1, 2]
+    for (double t : {-1.0, 1.0, 1.5, 2.0, 9.0}) EXPECT_EQ(unclamped.findSpan(t), 1) << t;
+    const KnotVector twoSpans(2, {0, 0, 0, 0.5, 1, 1, 1});
+    EXPECT_EQ(twoSpans.findSpan(0.75), 3);
+}
+
 TEST(KnotVector, NamesWhatIsWrong) {
     EXPECT_NE(KnotVector(2, {0, 0, 0, 1, 1, 1}).problem(4)->find("do not fit"), std::string::npos);
     EXPECT_NE(KnotVector(1, {0, 0, 0.7, 0.5, 1, 1}).problem(4)->find("decrease"),
