@@ -119,26 +119,39 @@ DifferenceRange rangeOf(const BezierPatch& difference, int pieces, bool trimmedC
     DifferenceRange range;
     std::array<BezierPatch, 4> quarters;
     if (pieces == 2) quarters = difference.quarters();
+    BezierPatch other;
+    // largest squared norms, their roots taken once: the root is monotone and correctly rounded,
+    // so the root of the largest square is the largest root, to the bit
+    double largestValue2 = 0, interior2 = 0, boundary2 = 0;
     for (int a = 0; a < pieces; ++a)
         for (int b = 0; b < pieces; ++b) {
-            const BezierPatch part =
-                pieces == 1   ? difference
-                : pieces == 2 ? std::move(quarters[2 * a + b])
-                              : difference.restricted(double(a) / pieces, double(a + 1) / pieces,
-                                                      double(b) / pieces, double(b + 1) / pieces);
+            const BezierPatch* part = &difference;
+            if (pieces == 2) {
+                part = &quarters[2 * a + b];
+            } else if (pieces > 2) {
+                other = difference.restricted(double(a) / pieces, double(a + 1) / pieces,
+                                              double(b) / pieces, double(b + 1) / pieces);
+                part = &other;
+            }
             for (int i = 0; i <= degreeU; ++i)
                 for (int j = 0; j <= degreeV; ++j) {
-                    const Point3 p = part.pole3(i, j);
+                    const Point3 p = part->pole3(i, j);
+                    const double p2 = p.squaredNorm();
                     points.push_back(p);
+                    interior2 = std::max(interior2, p2);
                     const bool onSide = (i == 0 && a == 0) || (i == degreeU && a == pieces - 1) ||
                                         (j == 0 && b == 0) || (j == degreeV && b == pieces - 1);
-                    if (onSide) sidePoints.push_back(p);
+                    if (onSide) {
+                        sidePoints.push_back(p);
+                        boundary2 = std::max(boundary2, p2);
+                    }
                     if ((i == 0 || i == degreeU) && (j == 0 || j == degreeV))
-                        range.largestValue = std::max(range.largestValue, p.norm());
+                        largestValue2 = std::max(largestValue2, p2);
                 }
         }
-    for (const Point3& p : points) range.interior = std::max(range.interior, p.norm());
-    for (const Point3& p : sidePoints) range.boundary = std::max(range.boundary, p.norm());
+    range.largestValue = std::sqrt(largestValue2);
+    range.interior = std::sqrt(interior2);
+    range.boundary = std::sqrt(boundary2);
     // only the one the cell needs is measured; the other keeps the plain triangle inequality
     range.spreadToEdges =
         trimmedCell ? range.interior + range.boundary : farthestPair(points, sidePoints);
