@@ -62,9 +62,29 @@ void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double 
 BezierPatch BezierPatch::restricted(double u0, double u1, double v0, double v1) const {
     BezierPatch out = *this;
     const int stride = degreeV_ + 1;
-    if (u0 > 0.0 || u1 < 1.0)
-        for (int j = 0; j <= degreeV_; ++j)
-            restrictBezierCurve(&out.poles_[j], degreeU_, stride, u0, u1);
+    if (u0 > 0.0 || u1 < 1.0) {
+        // restrictBezierCurve on every column at once, a whole row of the net per step: the same
+        // operations on each point as column by column, in the order the net is stored
+        HomogeneousPoint3* net = out.poles_.data();
+        const int m = degreeU_;
+        auto row = [&](int i) { return net + i * stride; };
+        if (u1 < 1.0) {
+            const double t = u1;
+            for (int level = 1; level <= m; ++level)
+                for (int i = m; i >= level; --i) {
+                    HomogeneousPoint3 *to = row(i), *before = row(i - 1);
+                    for (int j = 0; j < stride; ++j) to[j] = (1 - t) * before[j] + t * to[j];
+                }
+        }
+        if (u0 > 0.0 && u1 > 0.0) {
+            const double t = u0 / u1;
+            for (int level = 1; level <= m; ++level)
+                for (int i = 0; i <= m - level; ++i) {
+                    HomogeneousPoint3 *to = row(i), *after = row(i + 1);
+                    for (int j = 0; j < stride; ++j) to[j] = (1 - t) * to[j] + t * after[j];
+                }
+        }
+    }
     if (v0 > 0.0 || v1 < 1.0)
         for (int i = 0; i <= degreeU_; ++i)
             restrictBezierCurve(&out.poles_[i * stride], degreeV_, 1, v0, v1);
