@@ -41,8 +41,16 @@ struct Rect {
     Path path() const { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 };
 
+// One clipper per thread, cleared between uses: a new one allocated its lists anew for every
+// kd-tree cell and leaf.
+ClipperLib::Clipper& threadClipper() {
+    thread_local ClipperLib::Clipper clipper;
+    clipper.Clear();
+    return clipper;
+}
+
 Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear) {
-    ClipperLib::Clipper clipper;
+    ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(preserveCollinear);
     clipper.AddPaths(subject, ClipperLib::ptSubject, true);
     clipper.AddPath(r.path(), ClipperLib::ptClip, true);
@@ -603,7 +611,7 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
         out.push_back({lines.withHangingPoints(r.path(), r)});
         return out;
     }
-    ClipperLib::Clipper clipper;
+    ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(true);
     clipper.AddPaths(region, ClipperLib::ptSubject, true);
     clipper.AddPath(r.path(), ClipperLib::ptClip, true);
