@@ -10,18 +10,24 @@ BezierPatch::BezierPatch(int degreeU, int degreeV)
 namespace {
 
 // Keep the left part [0, t] of the curve: after de Casteljau at t the left control points are
-// the first point of each level.
-void keepLeft(HomogeneousPoint3* pts, int degree, int stride, double t) {
+// the first point of each level. `width` curves side by side (control point i of curve w at
+// pts[i * stride + w]) are cut together, a run of adjacent points per step: the same
+// operations on each point as curve by curve.
+void keepLeft(HomogeneousPoint3* pts, int degree, int stride, double t, int width = 1) {
     for (int level = 1; level <= degree; ++level)
-        for (int i = degree; i >= level; --i)
-            pts[i * stride] = (1 - t) * pts[(i - 1) * stride] + t * pts[i * stride];
+        for (int i = degree; i >= level; --i) {
+            HomogeneousPoint3 *to = pts + i * stride, *before = pts + (i - 1) * stride;
+            for (int w = 0; w < width; ++w) to[w] = (1 - t) * before[w] + t * to[w];
+        }
 }
 
 // Keep the right part [t, 1]: the last point of each level.
-void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t) {
+void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t, int width = 1) {
     for (int level = 1; level <= degree; ++level)
-        for (int i = 0; i <= degree - level; ++i)
-            pts[i * stride] = (1 - t) * pts[i * stride] + t * pts[(i + 1) * stride];
+        for (int i = 0; i <= degree - level; ++i) {
+            HomogeneousPoint3 *to = pts + i * stride, *after = pts + (i + 1) * stride;
+            for (int w = 0; w < width; ++w) to[w] = (1 - t) * to[w] + t * after[w];
+        }
 }
 
 // Both halves at 1/2 from one de Casteljau triangle: the left half into pts, the right half
@@ -54,37 +60,18 @@ std::array<BezierPatch, 4> BezierPatch::quarters() const {
     return out;
 }
 
-void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b) {
-    if (b < 1.0) keepLeft(pts, degree, stride, b);
-    if (a > 0.0 && b > 0.0) keepRight(pts, degree, stride, a / b);
+void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b,
+                         int width) {
+    if (b < 1.0) keepLeft(pts, degree, stride, b, width);
+    if (a > 0.0 && b > 0.0) keepRight(pts, degree, stride, a / b, width);
 }
 
 BezierPatch BezierPatch::restricted(double u0, double u1, double v0, double v1) const {
     BezierPatch out = *this;
     const int stride = degreeV_ + 1;
-    if (u0 > 0.0 || u1 < 1.0) {
-        // restrictBezierCurve on every column at once, a whole row of the net per step: the same
-        // operations on each point as column by column, in the order the net is stored
-        HomogeneousPoint3* net = out.poles_.data();
-        const int m = degreeU_;
-        auto row = [&](int i) { return net + i * stride; };
-        if (u1 < 1.0) {
-            const double t = u1;
-            for (int level = 1; level <= m; ++level)
-                for (int i = m; i >= level; --i) {
-                    HomogeneousPoint3 *to = row(i), *before = row(i - 1);
-                    for (int j = 0; j < stride; ++j) to[j] = (1 - t) * before[j] + t * to[j];
-                }
-        }
-        if (u0 > 0.0 && u1 > 0.0) {
-            const double t = u0 / u1;
-            for (int level = 1; level <= m; ++level)
-                for (int i = 0; i <= m - level; ++i) {
-                    HomogeneousPoint3 *to = row(i), *after = row(i + 1);
-                    for (int j = 0; j < stride; ++j) to[j] = (1 - t) * to[j] + t * after[j];
-                }
-        }
-    }
+    // every column at once along u, a whole row of the net per step
+    if (u0 > 0.0 || u1 < 1.0)
+        restrictBezierCurve(out.poles_.data(), degreeU_, stride, u0, u1, stride);
     if (v0 > 0.0 || v1 < 1.0)
         for (int i = 0; i <= degreeU_; ++i)
             restrictBezierCurve(&out.poles_[i * stride], degreeV_, 1, v0, v1);

@@ -45,7 +45,9 @@ private:
 };
 
 // Restrict the Bezier curve with `degree`+1 control points at pts[0], pts[stride], ... to the
-// local interval [a, b] in place.
-void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b);
+// local interval [a, b] in place; with `width`, that many curves side by side, curve w's
+// points at pts[w], pts[stride + w], ...
+void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b,
+                         int width = 1);
 
 }  // namespace nurbslod
