@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/BasisFunctions.hpp"
+
 namespace nurbslod {
 
 KnotVector::KnotVector(int degree, std::vector<double> knots)
     : degree_(degree), knots_(std::move(knots)) {
     // Rows for degrees past what problem() accepts are not needed: such a vector is refused
     // before anything evaluates on it.
-    const int rows = std::clamp(degree_, 0, 40);
+    const int rows = std::clamp(degree_, 0, kMaxDegree);
     const size_t m = knots_.size();
     reciprocals_.assign(static_cast<size_t>(rows) * m, 0.0);
     for (int j = 1; j <= rows; ++j) {
@@ -20,7 +22,7 @@ KnotVector::KnotVector(int degree, std::vector<double> knots)
         }
     }
     bezierSpans_.assign(m, 0);
-    for (int i = rows > 0 ? rows - 1 : 0; rows > 0 && i + rows < static_cast<int>(m); ++i) {
+    for (int i = rows; rows > 0 && i + rows < static_cast<int>(m); ++i) {
         bool bezier = knots_[i + 1] > knots_[i];
         for (int k = 1; k < rows && bezier; ++k)
             bezier = knots_[i - k] == knots_[i] && knots_[i + 1 + k] == knots_[i + 1];
@@ -66,7 +68,8 @@ std::vector<double> KnotVector::breakpoints() const {
 
 std::optional<std::string> KnotVector::problem(int controlPoints) const {
     if (degree_ < 1) return "degree " + std::to_string(degree_) + " is below 1";
-    if (degree_ > 40) return "degree " + std::to_string(degree_) + " is above 40";
+    if (degree_ > kMaxDegree)
+        return "degree " + std::to_string(degree_) + " is above " + std::to_string(kMaxDegree);
     if (static_cast<int>(knots_.size()) != controlPoints + degree_ + 1)
         return std::to_string(knots_.size()) + " knots do not fit " +
                std::to_string(controlPoints) + " control points of degree " +

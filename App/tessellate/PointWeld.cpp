@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry/BitMix.hpp"
+
 namespace nurbslod {
 
 namespace {
@@ -19,7 +21,8 @@ public:
     // the point registered for `key`, or -1
     std::int64_t find(std::int64_t key) const {
         const std::size_t mask = slots_.size() - 1;
-        for (std::size_t at = hash(key) & mask;; at = (at + 1) & mask) {
+        for (std::size_t at = mixBits(static_cast<std::uint64_t>(key)) & mask;;
+             at = (at + 1) & mask) {
             if (slots_[at].key == key) return slots_[at].point;
             if (slots_[at].key == kEmpty) return -1;
         }
@@ -27,7 +30,8 @@ public:
     // registers `point` for `key` unless the key has one
     void insert(std::int64_t key, std::uint32_t point) {
         const std::size_t mask = slots_.size() - 1;
-        for (std::size_t at = hash(key) & mask;; at = (at + 1) & mask) {
+        for (std::size_t at = mixBits(static_cast<std::uint64_t>(key)) & mask;;
+             at = (at + 1) & mask) {
             if (slots_[at].key == key) return;
             if (slots_[at].key == kEmpty) {
                 slots_[at] = {key, point};
@@ -43,13 +47,6 @@ private:
     };
     // keys are 63-bit cell codes, never negative
     static constexpr std::int64_t kEmpty = -1;
-    static std::size_t hash(std::int64_t key) {
-        auto bits = static_cast<std::uint64_t>(key);
-        bits ^= bits >> 33;
-        bits *= 0xff51afd7ed558ccdULL;
-        bits ^= bits >> 33;
-        return static_cast<std::size_t>(bits);
-    }
     std::vector<Slot> slots_;
 };
 

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <vector>
 
+#include "geometry/BitMix.hpp"
 #include "geometry/SegmentDistance.hpp"
 
 namespace nurbslod {
@@ -81,15 +82,6 @@ const MidpointBernstein& midpointBernstein(int n) {
     return tables[n];
 }
 
-// A parameter's bits, mixed (the standard library hashes a double byte by byte, a tenth of the
-// edges' subdivision time).
-std::size_t slotHash(std::uint64_t bits) {
-    bits ^= bits >> 33;
-    bits *= 0xff51afd7ed558ccdULL;
-    bits ^= bits >> 33;
-    return static_cast<std::size_t>(bits);
-}
-
 }  // namespace
 
 Point3 CurvePoints::operator()(double s) {
@@ -98,7 +90,7 @@ Point3 CurvePoints::operator()(double s) {
     const std::uint64_t key = std::bit_cast<std::uint64_t>(s == 0 ? 0.0 : s);
     if (2 * (used_ + 1) > slots_.size()) grow();
     const std::size_t mask = slots_.size() - 1;
-    std::size_t at = slotHash(key) & mask;
+    std::size_t at = mixBits(key) & mask;
     while (slots_[at].key != kEmpty) {
         if (slots_[at].key == key) return slots_[at].point;
         at = (at + 1) & mask;
@@ -115,7 +107,7 @@ void CurvePoints::grow() {
     const std::size_t mask = slots_.size() - 1;
     for (const Slot& slot : old) {
         if (slot.key == kEmpty) continue;
-        std::size_t at = slotHash(slot.key) & mask;
+        std::size_t at = mixBits(slot.key) & mask;
         while (slots_[at].key != kEmpty) at = (at + 1) & mask;
         slots_[at] = slot;
     }
