@@ -1,5 +1,7 @@
 #include "geometry/BezierPatch.hpp"
 
+#include <type_traits>
+
 namespace nurbslod {
 
 BezierPatch::BezierPatch(int degreeU, int degreeV)
@@ -13,7 +15,8 @@ namespace {
 // the first point of each level. `width` curves side by side (control point i of curve w at
 // pts[i * stride + w]) are cut together, a run of adjacent points per step: the same
 // operations on each point as curve by curve.
-void keepLeft(HomogeneousPoint3* pts, int degree, int stride, double t, int width = 1) {
+template <class Width = std::integral_constant<int, 1>>
+void keepLeft(HomogeneousPoint3* pts, int degree, int stride, double t, Width width = {}) {
     for (int level = 1; level <= degree; ++level)
         for (int i = degree; i >= level; --i) {
             HomogeneousPoint3 *to = pts + i * stride, *before = pts + (i - 1) * stride;
@@ -22,7 +25,8 @@ void keepLeft(HomogeneousPoint3* pts, int degree, int stride, double t, int widt
 }
 
 // Keep the right part [t, 1]: the last point of each level.
-void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t, int width = 1) {
+template <class Width = std::integral_constant<int, 1>>
+void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t, Width width = {}) {
     for (int level = 1; level <= degree; ++level)
         for (int i = 0; i <= degree - level; ++i) {
             HomogeneousPoint3 *to = pts + i * stride, *after = pts + (i + 1) * stride;
@@ -62,8 +66,15 @@ std::array<BezierPatch, 4> BezierPatch::quarters() const {
 
 void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b,
                          int width) {
-    if (b < 1.0) keepLeft(pts, degree, stride, b, width);
-    if (a > 0.0 && b > 0.0) keepRight(pts, degree, stride, a / b, width);
+    // one curve, the hot case of the v direction, with its width known to the compiler
+    auto cut = [&](auto curves) {
+        if (b < 1.0) keepLeft(pts, degree, stride, b, curves);
+        if (a > 0.0 && b > 0.0) keepRight(pts, degree, stride, a / b, curves);
+    };
+    if (width == 1)
+        cut(std::integral_constant<int, 1>{});
+    else
+        cut(width);
 }
 
 BezierPatch BezierPatch::restricted(double u0, double u1, double v0, double v1) const {
