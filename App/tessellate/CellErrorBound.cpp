@@ -161,7 +161,7 @@ DifferenceRange rangeOf(const BezierPatch& difference, int pieces, bool trimmedC
 
 // |w_perp| of CellErrorBound::planarTwist, or infinity where the corners projected onto the
 // plane of the sides at c00 do not make a strictly convex quadrilateral (c00, c10, c11, c01).
-double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11) {
+double twistOutOfPlane(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11) {
     constexpr double kNone = std::numeric_limits<double>::infinity();
     const Point3 a = c10 - c00, b = c01 - c00, w = c00 - c10 - c01 + c11;
     const Point3 normal = a.cross(b);
@@ -177,6 +177,37 @@ double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, co
         if (!(side.cross(next).dot(n) > 1e-12 * side.norm() * next.norm())) return kNone;
     }
     return wNormal.norm();
+}
+
+// The shortest side's length, where the other corners make a proper triangle: infinity
+// otherwise. A cell with a side at a pole (a cone's column at its apex, a sphere's cell at its
+// tip) has two equal corners, no plane of the sides at one of them, and a twist as large as its
+// far side: without this it is split until that side is four times the target. Merge the
+// side's corners, c' = c + d with |d| = delta the side's length: the bilinear map B'' of the
+// merged corners maps the cell onto the triangle of the three others, each side onto a side or
+// onto the merged corner, and B - B'' = g d with g (a product of s, t, 1 - s, 1 - t) in [0, 1].
+// Triangles through points on the cell's sides, flattened by B'', have their corners in the
+// cell's order on the triangle's border, so none turns the other way and they tile it (a fan
+// from a merged pole has area zero at it). Then, as for planarTwist, a triangle point
+// M = sum lambda_k S(p_k) has the x with B''(x) = sum lambda_k B''(p_k), and
+//   M - S(x) = [sum lambda_k E(p_k) - E(x)] + d (sum lambda_k g(p_k) - g(x)),
+// at most spreadToEdges + delta; a surface point S(x) has such an M the same way.
+double collapsedSide(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11) {
+    const Point3 corner[4] = {c00, c10, c11, c01};
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) {
+        const double delta = (corner[(k + 1) % 4] - corner[k]).norm();
+        if (!(delta < shortest)) continue;
+        // the triangle of corner k (the merged one) and the two beyond the side
+        const Point3 a = corner[(k + 2) % 4] - corner[k], b = corner[(k + 3) % 4] - corner[k];
+        const double area = a.cross(b).norm();
+        if (area > 1e-12 * a.norm() * b.norm() && std::isfinite(area)) shortest = delta;
+    }
+    return shortest;
+}
+
+double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11) {
+    return std::min(twistOutOfPlane(c00, c10, c01, c11), collapsedSide(c00, c10, c01, c11));
 }
 
 // Split direction: the one in which the net bends more (second differences); the split goes

@@ -51,7 +51,9 @@ struct CellErrorBound {
     //   M - S(x) = [sum lambda_k E(p_k) - E(x)] + w_perp (sum lambda_k s_k t_k - s t),
     // at most spreadToEdges + |w_perp|; a surface point S(x) has the triangle point M with that
     // B'(x) the same way. A geometric bound, not at equal parameters as `twist`: the verifier and
-    // the guarantee measure distances.
+    // the guarantee measure distances. Where a side is short (delta; 0 at a pole, where the
+    // corners coincide and no plane of the sides is found), its corners merged make a triangle of
+    // the other three, and the same argument holds with delta for |w_perp|: the least of the two.
     double planarTwist = std::numeric_limits<double>::infinity();
     // Where the trimmed region's piece of the cell lies in a box of a fraction fu of the cell's
     // width and fv of its height, fu fv (1 for the whole cell): a triangle with its corners in

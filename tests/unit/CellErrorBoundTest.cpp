@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "geometry/SegmentDistance.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -275,6 +277,138 @@ TEST(CellErrorBound, ConeColumnIsBoundedByItsBulgeNotItsTwist) {
     EXPECT_EQ(approximate.measure(ErrorMode::Approximate, true),
               approximate.measure(ErrorMode::Approximate, false));
     EXPECT_LE(approximate.measure(ErrorMode::Approximate, true), 1.4 * bulge);
+}
+
+// An oblique cone's column from its apex (a ruled patch whose first row of poles is one point,
+// as trj7_b1-ec-214.stp's half cones): two corners coincide, so there is no plane of the sides
+// at one of them, and the twist is a quarter of the far side, 5 times the bulge here. The
+// corners are a triangle and the triangles over the cell lie in its plane: measured as
+// distances, both ways, they are off by the bulge alone, for the cell's own triangles and for
+// triangles through points on its sides. A side that is merely short (delta) costs its length.
+TEST(CellErrorBound, ColumnAtAnApexIsBoundedByItsBulgeNotItsTwist) {
+    const double radius = 4, angle = 0.4, w = std::cos(angle / 2);
+    const Point3 apex(1.0, -0.5, 2.3);
+    auto arcPole = [&](int i) {
+        return i == 0   ? Point3(radius, 0, 0)
+               : i == 1 ? Point3(radius, radius * std::tan(angle / 2), 0)
+                        : Point3(radius * std::cos(angle), radius * std::sin(angle), 0);
+    };
+    // u along the arc (degree 2, rational), v from the apex row (spread by delta) to the arc
+    auto column = [&](double delta) {
+        BezierPatch patch(2, 1);
+        for (int i = 0; i <= 2; ++i) {
+            const double weight = i == 1 ? w : 1;
+            const Point3 bottom = apex + Point3(delta * i / 2, 0, 0), top = arcPole(i);
+            patch.pole(i, 0) = HomogeneousPoint3(weight * bottom.x(), weight * bottom.y(),
+                                                 weight * bottom.z(), weight);
+            patch.pole(i, 1) =
+                HomogeneousPoint3(weight * top.x(), weight * top.y(), weight * top.z(), weight);
+        }
+        return patch;
+    };
+    // Distance from p to the patch: the nearest generator (v lines are straight) among fine
+    // samples, refined by a ternary search around it.
+    auto toSurface = [&](const BezierPatch& patch, const Point3& p) {
+        auto onGenerator = [&](double s) {
+            return distanceToSegment(p, patch.point(s, 0), patch.point(s, 1));
+        };
+        constexpr int samples = 400;
+        int best = 0;
+        for (int k = 1; k <= samples; ++k)
+            if (onGenerator(double(k) / samples) < onGenerator(double(best) / samples)) best = k;
+        double lo = std::max(0.0, (best - 1.0) / samples);
+        double hi = std::min(1.0, (best + 1.0) / samples);
+        for (int k = 0; k < 60; ++k) {
+            const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+            if (onGenerator(a) < onGenerator(b))
+                hi = b;
+            else
+                lo = a;
+        }
+        return std::min(onGenerator(0.5 * (lo + hi)), onGenerator(double(best) / samples));
+    };
+    auto toTriangle = [](const Point3& p, const std::array<Point3, 3>& triangle) {
+        const auto& [a, b, c] = triangle;
+        if ((b - a).cross(c - a).norm() > 1e-14) return distanceToTriangle(p, a, b, c);
+        // a fan's triangle at the apex, two of its corners one point: a segment
+        return std::min(
+            {distanceToSegment(p, a, b), distanceToSegment(p, b, c), distanceToSegment(p, a, c)});
+    };
+    const double bulge = radius * (1 - std::cos(angle / 2));
+    for (const double delta : {0.0, 0.1 * bulge}) {
+        const BezierPatch patch = column(delta);
+        const CellErrorBound bound = cellErrorBound(patch, ErrorMode::Guaranteed);
+        EXPECT_LE(bound.planarTwist, delta * (1 + 1e-9) + 1e-12);
+        EXPECT_GT(bound.twist, 4.5 * bulge);
+        EXPECT_LE(bound.untrimmed(), 1.4 * bulge + delta);
+        // the cell's two triangles, and triangles through points its neighbours put on its
+        // sides: one on the arc, one on each generator
+        const std::vector<std::vector<Parameter>> triangulations = {
+            {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}},
+            {{0, 0}, {1, 0}, {0.5, 1}, {1, 0}, {1, 1}, {0.5, 1}, {0, 0}, {0.5, 1}, {0, 1}},
+            {{0, 0},
+             {1, 0},
+             {1, 0.5},
+             {0, 0},
+             {1, 0.5},
+             {0, 0.5},
+             {0, 0.5},
+             {1, 0.5},
+             {1, 1},
+             {0, 0.5},
+             {1, 1},
+             {0, 1}}};
+        for (const auto& corners : triangulations) {
+            std::vector<std::array<Point3, 3>> triangles;
+            for (std::size_t k = 0; k < corners.size(); k += 3)
+                triangles.push_back({patch.point(corners[k][0], corners[k][1]),
+                                     patch.point(corners[k + 1][0], corners[k + 1][1]),
+                                     patch.point(corners[k + 2][0], corners[k + 2][1])});
+            double surfaceToTriangles = 0, trianglesToSurface = 0;
+            constexpr int steps = 24;
+            for (int i = 0; i <= steps; ++i)
+                for (int j = 0; j <= steps; ++j) {
+                    const double s = double(i) / steps, t = double(j) / steps;
+                    double nearest = std::numeric_limits<double>::infinity();
+                    for (const auto& triangle : triangles)
+                        nearest = std::min(nearest, toTriangle(patch.point(s, t), triangle));
+                    surfaceToTriangles = std::max(surfaceToTriangles, nearest);
+                    if (i + j <= steps)
+                        for (const auto& [a, b, c] : triangles)
+                            trianglesToSurface =
+                                std::max(trianglesToSurface,
+                                         toSurface(patch, s * a + t * b + (1 - s - t) * c));
+                }
+            // off by the bulge, or by less where points on the generators halve the cell
+            EXPECT_GT(surfaceToTriangles, 0.2 * bulge) << "delta " << delta;
+            EXPECT_LE(surfaceToTriangles, bound.untrimmed()) << "delta " << delta;
+            EXPECT_LE(trianglesToSurface, bound.untrimmed()) << "delta " << delta;
+        }
+    }
+}
+
+// A saddle (a bilinear patch: no bulge at all) is off its two triangles by its twist alone, and
+// no side of it may stand in for that twist.
+TEST(CellErrorBound, SaddleKeepsItsTwist) {
+    BezierPatch patch(1, 1);
+    patch.pole(0, 0) = HomogeneousPoint3(0, 0, 0, 1);
+    patch.pole(1, 0) = HomogeneousPoint3(1, 0, 0, 1);
+    patch.pole(0, 1) = HomogeneousPoint3(0, 1, 0, 1);
+    patch.pole(1, 1) = HomogeneousPoint3(1, 1, 1, 1);
+    const CellErrorBound bound = cellErrorBound(patch, ErrorMode::Guaranteed);
+    const Point3 c00 = patch.point(0, 0), c10 = patch.point(1, 0);
+    const Point3 c01 = patch.point(0, 1), c11 = patch.point(1, 1);
+    double surfaceToTriangles = 0;
+    for (int i = 0; i <= 32; ++i)
+        for (int j = 0; j <= 32; ++j) {
+            const Point3 p = patch.point(i / 32.0, j / 32.0);
+            surfaceToTriangles =
+                std::max(surfaceToTriangles, std::min(distanceToTriangle(p, c00, c10, c11),
+                                                      distanceToTriangle(p, c00, c11, c01)));
+        }
+    EXPECT_GT(surfaceToTriangles, 0.1);
+    EXPECT_LE(surfaceToTriangles, bound.untrimmed());
+    EXPECT_NEAR(bound.untrimmed(), 0.25, 1e-12);
 }
 
 }  // namespace
