@@ -185,6 +185,77 @@ cInt throughBoundaryPoint(const Paths& region, const Rect& r, int direction, cIn
     return onLowSide && onHighSide && onSideDistance <= insideDistance ? onSide : inside;
 }
 
+// A split that cuts the part of a cell the boundary runs through off the rest, where that part
+// is a band along one side at most a quarter of the cell wide: the rest is then wholly inside
+// or outside the region. A boundary that follows a cell's side but for a wiggle (a sloppy edge's
+// shared points projected onto the surface, a hair off its iso-line) otherwise makes every cell
+// along it a trimmed one, bound by the twist of the whole cell (CellErrorBound::trimmed) and
+// halved, band and all, until that twist is small: trj7_b1-ec-214.stp's cones along their
+// circles, cut into four times the columns their bulge needs. Cut off, the band is a thin
+// trimmed cell whose twist is as thin, and the rest a cell that the bound for corners on its
+// sides, or no bound at all, covers. The line goes through the band's farthest point: it adds
+// no point to the boundary there. None where the boundary reaches farther into the cell.
+std::optional<std::pair<int, cInt>> bandSplit(const Paths& region, const Rect& r) {
+    // the extent of the boundary's segments within the closed cell
+    double low[2] = {std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::infinity()};
+    double high[2] = {-std::numeric_limits<double>::infinity(),
+                      -std::numeric_limits<double>::infinity()};
+    const double box[2][2] = {{double(r.x0), double(r.x1)}, {double(r.y0), double(r.y1)}};
+    for (const Path& path : region)
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            const IntPoint& a = path[i];
+            const IntPoint& b = path[(i + 1) % path.size()];
+            // along a side the boundary is where the cell's own sides are (CellChoices::
+            // filledCellsBySides)
+            if ((a.X == b.X && (a.X == r.x0 || a.X == r.x1)) ||
+                (a.Y == b.Y && (a.Y == r.y0 || a.Y == r.y1)))
+                continue;
+            // Liang-Barsky: the segment's parameters within the cell
+            const double from[2] = {double(a.X), double(a.Y)};
+            const double step[2] = {double(b.X - a.X), double(b.Y - a.Y)};
+            double t0 = 0, t1 = 1;
+            for (int axis = 0; axis < 2 && t0 <= t1; ++axis) {
+                if (step[axis] == 0) {
+                    if (from[axis] < box[axis][0] || from[axis] > box[axis][1]) t0 = 2;
+                    continue;
+                }
+                double enter = (box[axis][0] - from[axis]) / step[axis];
+                double leave = (box[axis][1] - from[axis]) / step[axis];
+                if (enter > leave) std::swap(enter, leave);
+                t0 = std::max(t0, enter);
+                t1 = std::min(t1, leave);
+            }
+            if (t0 > t1) continue;
+            for (int axis = 0; axis < 2; ++axis)
+                for (const double t : {t0, t1}) {
+                    const double x =
+                        std::clamp(from[axis] + t * step[axis], box[axis][0], box[axis][1]);
+                    low[axis] = std::min(low[axis], x);
+                    high[axis] = std::max(high[axis], x);
+                }
+        }
+    std::optional<std::pair<int, cInt>> best;
+    double thinnest = 0.25;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!(low[axis] <= high[axis])) return std::nullopt;  // no boundary in the cell
+        const cInt lo = axis == 0 ? r.x0 : r.y0, hi = axis == 0 ? r.x1 : r.y1;
+        const double width = double(hi - lo);
+        // a band along the low side: the line through its farthest point, the rest beyond
+        const auto nearLow = static_cast<cInt>(std::ceil(high[axis]));
+        if (nearLow > lo && nearLow < hi - 1 && double(nearLow - lo) / width <= thinnest) {
+            thinnest = double(nearLow - lo) / width;
+            best = {axis, nearLow};
+        }
+        const auto nearHigh = static_cast<cInt>(std::floor(low[axis]));
+        if (nearHigh < hi && nearHigh > lo + 1 && double(hi - nearHigh) / width <= thinnest) {
+            thinnest = double(hi - nearHigh) / width;
+            best = {axis, nearHigh};
+        }
+    }
+    return best;
+}
+
 // Squared distance from p to segment ab, and the parameter of the nearest point.
 std::pair<double, double> segmentDistance(const IntPoint& p, const IntPoint& a, const IntPoint& b) {
     const double ax = double(a.X), ay = double(a.Y);
@@ -507,6 +578,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const bool trimmedCell = !node.full && !sidesOnly;
         // a cell whose centre is off by more than the target is split whatever its bound
         CellSplit preferred;
+        // a trimmed cell whose bound for corners on its sides would do (bandSplit)
+        bool sidesWouldDo = false;
         if (mode_ == ErrorMode::Guaranteed && centreDeviation(piece) > target) {
             preferred = preferredSplit(piece);
         } else {
@@ -517,6 +590,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 continue;
             }
             preferred = {bound.splitDirection, bound.splitAt};
+            sidesWouldDo = trimmedCell && bound.untrimmed() <= target;
         }
         const bool canU = r.x1 - r.x0 >= 2, canV = r.y1 - r.y0 >= 2;
         if (node.depth >= kMaxDepth || (!canU && !canV)) {
@@ -534,6 +608,11 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         const cInt at = even ? static_cast<cInt>(*even)
                              : std::clamp<cInt>(lo + std::llround(preferred.at * double(hi - lo)),
                                                 lo + 1, hi - 1);
+        if (sidesWouldDo && choices_.filledCellsBySides && choices_.splitThroughBoundaryPoints)
+            if (const auto band = bandSplit(*node.region, r)) {
+                split(band->first, band->second);
+                continue;
+            }
         split(direction, node.full || !choices_.splitThroughBoundaryPoints
                              ? at
                              : throughBoundaryPoint(*node.region, r, direction, at));
