@@ -39,21 +39,23 @@ struct CellErrorBound {
     // Bound on |E(x) - E(y)|, x and y anywhere in the cell (at most 2 interior).
     double spread = 0;
     // Where the four corners make a convex quadrilateral in a plane but for w_perp, the part of
-    // w = P00 - Pm0 - P0n + Pmn normal to the plane of the sides at P00: |w_perp|; infinity
-    // otherwise. Every cell of a surface of revolution cut along its meridians and parallels
-    // is an isosceles trapezoid (w_perp = 0), whose twist is a quarter of the difference of
-    // its parallel sides: on a cone's column or a sphere's cell near the pole, as large as the
-    // bulge itself. That twist moves the triangles within the trapezoid's plane only, and the
-    // distance to the surface does not see it, both ways: write B = B' + s t w_perp, B' the
-    // planar bilinear map onto the quadrilateral. Triangles through points on the cell's sides,
-    // flattened by B', tile B'(cell); a triangle point M = sum lambda_k S(p_k) then has the
-    // parameter x with B'(x) = sum lambda_k B'(p_k), and
+    // w = P00 - Pm0 - P0n + Pmn normal to the plane of the sides at P00: |w_perp| times a factor
+    // of at most 1; infinity otherwise. Every cell of a surface of revolution cut along its
+    // meridians and parallels is an isosceles trapezoid (w_perp = 0), whose twist is a quarter of
+    // the difference of its parallel sides: on a cone's column or a sphere's cell near the pole,
+    // as large as the bulge itself. That twist moves the triangles within the trapezoid's plane
+    // only, and the distance to the surface does not see it, both ways: write
+    // B = B' + s t w_perp, B' the planar bilinear map onto the quadrilateral. Triangles through
+    // points on the cell's sides, flattened by B', tile B'(cell); a triangle point
+    // M = sum lambda_k S(p_k) then has the parameter x with B'(x) = sum lambda_k B'(p_k), and
     //   M - S(x) = [sum lambda_k E(p_k) - E(x)] + w_perp (sum lambda_k s_k t_k - s t),
-    // at most spreadToEdges + |w_perp|; a surface point S(x) has the triangle point M with that
-    // B'(x) the same way. A geometric bound, not at equal parameters as `twist`: the verifier and
-    // the guarantee measure distances. Where a side is short (delta; 0 at a pole, where the
-    // corners coincide and no plane of the sides is found), its corners merged make a triangle of
-    // the other three, and the same argument holds with delta for |w_perp|: the least of the two.
+    // at most spreadToEdges + |w_perp| |sum lambda_k s_k t_k - s t|; a surface point S(x) has the
+    // triangle point M with that B'(x) the same way. The last factor is at most 1, and near a
+    // parallelogram about 1/4 (twistOutOfPlane in CellErrorBound.cpp). A geometric bound, not at
+    // equal parameters as `twist`: the verifier and the guarantee measure distances. Where a
+    // side is short (delta; 0 at a pole, where the corners coincide and no plane of the sides is
+    // found), its corners merged make a triangle of the other three, and the same argument holds
+    // with delta for the out-of-plane term: the least of the two.
     double planarTwist = std::numeric_limits<double>::infinity();
     // Where the trimmed region's piece of the cell lies in a box of a fraction fu of the cell's
     // width and fv of its height, fu fv (1 for the whole cell): a triangle with its corners in

@@ -387,6 +387,91 @@ TEST(CellErrorBound, ColumnAtAnApexIsBoundedByItsBulgeNotItsTwist) {
     }
 }
 
+// A cell whose corners are a convex quadrilateral but for an out-of-plane part w_perp of the
+// twist w (a near parallelogram, bent a little out of its plane, on a bulging surface): its
+// triangles are within spreadToEdges + |w_perp| (1/4 + sqrt 2 |w_par| / (4 sigma)) of the
+// surface both ways, measured as distances, sigma the least stretch of the flattened map. Near a
+// parallelogram that is about a quarter of |w_perp|, where the bound took all of it.
+TEST(CellErrorBound, FlatCellsOutOfPlaneTwistCountsAboutAQuarter) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1, 1), anywhere(0, 1);
+    // distance from p to the patch over the cell: the nearest of a grid, refined twice around it
+    auto toSurface = [](const BezierPatch& patch, const Point3& p) {
+        double bestS = 0.5, bestT = 0.5, best = std::numeric_limits<double>::infinity();
+        double half = 0.5;
+        for (int level = 0; level < 4; ++level) {
+            const double s0 = bestS, t0 = bestT;
+            constexpr int n = 16;
+            for (int i = 0; i <= n; ++i)
+                for (int j = 0; j <= n; ++j) {
+                    const double s = std::clamp(s0 + half * (2.0 * i / n - 1), 0.0, 1.0);
+                    const double t = std::clamp(t0 + half * (2.0 * j / n - 1), 0.0, 1.0);
+                    const double d = (patch.point(s, t) - p).norm();
+                    if (d < best) best = d, bestS = s, bestT = t;
+                }
+            half *= 2.0 / 16;
+        }
+        return best;
+    };
+    int tighter = 0, checked = 0;
+    for (int trial = 0; trial < 24; ++trial) {
+        // corners: a parallelogram 2 x 1 moved by up to 0.15 in the plane and `lift` out of it
+        const double lift = 0.02 + 0.04 * anywhere(random);
+        Point3 corners[2][2];
+        for (int i = 0; i <= 1; ++i)
+            for (int j = 0; j <= 1; ++j)
+                corners[i][j] = Point3(2.0 * i + 0.5 * j + 0.15 * unit(random),
+                                       1.0 * j + 0.15 * unit(random), lift * unit(random));
+        // a biquadratic patch: the bilinear map of the corners plus a bulge up to 0.02
+        BezierPatch patch(2, 2);
+        const double bulge = 0.02 * anywhere(random);
+        for (int i = 0; i <= 2; ++i)
+            for (int j = 0; j <= 2; ++j) {
+                const double s = i / 2.0, t = j / 2.0;
+                Point3 p = (1 - s) * ((1 - t) * corners[0][0] + t * corners[0][1]) +
+                           s * ((1 - t) * corners[1][0] + t * corners[1][1]);
+                if (i == 1 || j == 1) p.z() += 2 * bulge * (i == 1 && j == 1 ? 2 : 1);
+                patch.pole(i, j) = HomogeneousPoint3(p.x(), p.y(), p.z(), 1);
+            }
+        const CellErrorBound bound = cellErrorBound(patch, ErrorMode::Guaranteed);
+        ASSERT_TRUE(std::isfinite(bound.planarTwist));
+        const Point3 w = corners[0][0] - corners[1][0] - corners[0][1] + corners[1][1];
+        const Point3 n =
+            (corners[1][0] - corners[0][0]).cross(corners[0][1] - corners[0][0]).normalized();
+        tighter += bound.planarTwist < 0.5 * std::abs(w.dot(n));
+        // the cell's two triangles, and triangles through points on its sides
+        std::vector<std::array<Parameter, 3>> triangles = {{{{0, 0}, {1, 0}, {1, 1}}},
+                                                           {{{0, 0}, {1, 1}, {0, 1}}}};
+        for (int k = 0; k < 4; ++k)
+            triangles.push_back({onBorder(random), onBorder(random), onBorder(random)});
+        double surfaceToTriangles = 0, trianglesToSurface = 0;
+        constexpr int steps = 10;
+        for (int i = 0; i <= steps; ++i)
+            for (int j = 0; j <= steps; ++j) {
+                const Point3 p = patch.point(double(i) / steps, double(j) / steps);
+                // the two triangles cover the cell: the nearest of them
+                surfaceToTriangles =
+                    std::max(surfaceToTriangles,
+                             std::min(distanceToTriangle(p, patch.point(0, 0), patch.point(1, 0),
+                                                         patch.point(1, 1)),
+                                      distanceToTriangle(p, patch.point(0, 0), patch.point(1, 1),
+                                                         patch.point(0, 1))));
+                if (i + j > steps) continue;
+                const double la = double(i) / steps, lb = double(j) / steps, lc = 1 - la - lb;
+                for (const auto& [a, b, c] : triangles)
+                    trianglesToSurface = std::max(
+                        trianglesToSurface, toSurface(patch, la * patch.point(a[0], a[1]) +
+                                                                 lb * patch.point(b[0], b[1]) +
+                                                                 lc * patch.point(c[0], c[1])));
+            }
+        EXPECT_LE(surfaceToTriangles, bound.untrimmed() * (1 + 1e-9)) << "trial " << trial;
+        EXPECT_LE(trianglesToSurface, bound.untrimmed() * (1 + 1e-9)) << "trial " << trial;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 24);
+    EXPECT_GE(tighter, 20);
+}
+
 // A saddle (a bilinear patch: no bulge at all) is off its two triangles by its twist alone, and
 // no side of it may stand in for that twist.
 TEST(CellErrorBound, SaddleKeepsItsTwist) {
