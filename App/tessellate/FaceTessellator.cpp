@@ -186,15 +186,15 @@ cInt throughBoundaryPoint(const Paths& region, const Rect& r, int direction, cIn
 }
 
 // A split that cuts the part of a cell the boundary runs through off the rest, where that part
-// is a band along one side at most a quarter of the cell wide: the rest is then wholly inside
-// or outside the region. A boundary that follows a cell's side but for a wiggle (a sloppy edge's
-// shared points projected onto the surface, a hair off its iso-line) otherwise makes every cell
-// along it a trimmed one, bound by the twist of the whole cell (CellErrorBound::trimmed) and
-// halved, band and all, until that twist is small: trj7_b1-ec-214.stp's cones along their
-// circles, cut into four times the columns their bulge needs. Cut off, the band is a thin
-// trimmed cell whose twist is as thin, and the rest a cell that the bound for corners on its
-// sides, or no bound at all, covers. The line goes through the band's farthest point: it adds
-// no point to the boundary there. None where the boundary reaches farther into the cell.
+// is a band along one side at most a quarter of the cell wide: the rest then holds the boundary
+// along its own sides only, so the region fills it or misses it. A boundary that follows a
+// cell's side but for a wiggle (a sloppy edge's shared points projected onto the surface, a hair
+// off its iso-line) otherwise makes every cell along it a trimmed one, bound by the twist of the
+// whole cell (CellErrorBound::trimmed) and halved, band and all, until that twist is small. Cut
+// off, the band is a thin trimmed cell whose twist is as thin, and the rest a cell that the
+// bound for corners on its sides covers (hammer.iges at relative 1e-4: 16,097 -> 11,841
+// triangles). The line goes through the band's farthest point: it adds no point to the boundary
+// there. None where the boundary reaches farther into the cell, or does not enter it.
 std::optional<std::pair<int, cInt>> bandSplit(const Paths& region, const Rect& r) {
     // the extent of the boundary's segments within the closed cell
     double low[2] = {std::numeric_limits<double>::infinity(),
