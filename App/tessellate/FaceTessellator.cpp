@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "tessellate/CellErrorBound.hpp"
 #include "tessellate/CellTriangulation.hpp"
 #include "tessellate/KdTreeGrid.hpp"
+#include "tessellate/NeedleSplit.hpp"
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 #include "tessellate/RectangleInRegion.hpp"
@@ -242,12 +244,14 @@ std::optional<std::pair<int, cInt>> bandSplit(const Paths& region, const Rect& r
         const cInt lo = axis == 0 ? r.x0 : r.y0, hi = axis == 0 ? r.x1 : r.y1;
         const double width = double(hi - lo);
         // a band along the low side: the line through its farthest point, the rest beyond
-        const auto nearLow = static_cast<cInt>(std::ceil(high[axis]));
+        static const double kMin = std::getenv("MINBAND") ? std::atof(std::getenv("MINBAND")) : 0.0;
+        const cInt least = static_cast<cInt>(kMin * width);
+        const auto nearLow = std::max(static_cast<cInt>(std::ceil(high[axis])), lo + least);
         if (nearLow > lo && nearLow < hi - 1 && double(nearLow - lo) / width <= thinnest) {
             thinnest = double(nearLow - lo) / width;
             best = {axis, nearLow};
         }
-        const auto nearHigh = static_cast<cInt>(std::floor(low[axis]));
+        const auto nearHigh = std::min(static_cast<cInt>(std::floor(low[axis])), hi - least);
         if (nearHigh < hi && nearHigh > lo + 1 && double(hi - nearHigh) / width <= thinnest) {
             thinnest = double(hi - nearHigh) / width;
             best = {axis, nearHigh};
@@ -775,71 +779,6 @@ struct BoundaryLookup {
 };
 }  // namespace
 
-namespace {
-
-// A cut point on an edge's chord is placed on the 3D chord (so that both faces of the edge
-// share it), while in the (u, v) plane the clipper's rounding moves it off the chord by a
-// fraction of a step. A triangle made of the chord's two ends and that point is then a needle:
-// valid in (u, v), of no area in space. Such a needle is removed and the triangle on the other
-// side of its long edge is split at the needle's middle point, which keeps every edge shared.
-void splitNeedles(FaceMesh& mesh) {
-    auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
-    auto isNeedle = [&](const std::array<std::uint32_t, 3>& t, int& longest) {
-        double longestLength = -1;
-        for (int k = 0; k < 3; ++k) {
-            const double l = (position(t[(k + 1) % 3]) - position(t[k])).squaredNorm();
-            if (l > longestLength) longestLength = l, longest = k;
-        }
-        const Vector3 n = (position(t[1]) - position(t[0])).cross(position(t[2]) - position(t[0]));
-        return n.norm() <= 1e-9 * longestLength;
-    };
-    auto edgeKey = [](std::uint32_t from, std::uint32_t to) {
-        return (std::uint64_t{from} << 32) | to;
-    };
-    std::unordered_map<std::uint64_t, std::size_t> triangleOfEdge;
-    triangleOfEdge.reserve(mesh.triangles.size() * 3);
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            triangleOfEdge[edgeKey(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3])] = i;
-    std::vector<char> removed(mesh.triangles.size(), 0);
-    // each split removes one needle; a split can make a new needle of a neighbour, so the
-    // passes are bounded by the number of triangles that were there at the start
-    const std::size_t maxSplits = mesh.triangles.size();
-    std::size_t splits = 0;
-    for (std::size_t i = 0; i < mesh.triangles.size() && splits < maxSplits; ++i) {
-        int longest = 0;
-        if (removed[i] || !isNeedle(mesh.triangles[i], longest)) continue;
-        const auto needle = mesh.triangles[i];
-        const std::uint32_t a = needle[longest], b = needle[(longest + 1) % 3];
-        const std::uint32_t c = needle[(longest + 2) % 3];
-        // the neighbour runs the long edge the other way: b -> a
-        auto it = triangleOfEdge.find(edgeKey(b, a));
-        if (it == triangleOfEdge.end() || removed[it->second]) continue;
-        const std::size_t j = it->second;
-        const auto other = mesh.triangles[j];
-        int at = 0;
-        while (!(other[at] == b && other[(at + 1) % 3] == a)) ++at;
-        const std::uint32_t d = other[(at + 2) % 3];
-        if (d == c) continue;
-        // (b, a, d) becomes (b, c, d) and (c, a, d); the needle goes
-        ++splits;
-        removed[i] = 1;
-        mesh.triangles[j] = {b, c, d};
-        mesh.triangles.push_back({c, a, d});
-        removed.push_back(0);
-        for (const std::size_t index : {j, mesh.triangles.size() - 1})
-            for (int k = 0; k < 3; ++k)
-                triangleOfEdge[edgeKey(mesh.triangles[index][k],
-                                       mesh.triangles[index][(k + 1) % 3])] = index;
-    }
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-        if (!removed[i]) mesh.triangles[out++] = mesh.triangles[i];
-    mesh.triangles.resize(out);
-}
-
-}  // namespace
-
 std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     const std::vector<BoundaryLoop>& loops) {
     if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
@@ -1061,7 +1000,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].uv = uvOfVertex[i];
     }
     removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap + budget_.openChords);
-    splitNeedles(mesh);
+    splitNeedles(mesh.triangles,
+                 [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; });
     if (face_.reversed)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
     mesh.toleranceReached = toleranceReached_;

@@ -25,6 +25,7 @@
 #include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/KdTreeAlignedHalving.hpp"
+#include "tessellate/NeedleSplit.hpp"
 #include "tessellate/PointWeld.hpp"
 #include "tessellate/SurfaceMeeting.hpp"
 #include "tessellate/SurfaceProjection.hpp"
@@ -1253,6 +1254,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     mesh.triangles.resize(out);
     mesh.triangleNormals.resize(out);
     mesh.triangleFaces.resize(out);
+    // A face's own point that the weld moved onto a point of another face's chord (a thin band
+    // of a trimmed cell along its boundary, 1e-6 of a millimetre wide on bottle.brep's thread)
+    // leaves a needle there: its triangle across that chord is split at the point instead.
+    const std::vector<std::array<std::uint32_t, 3>> normalsBefore = mesh.triangleNormals;
+    const std::vector<std::int32_t> facesBefore = mesh.triangleFaces;
+    const std::vector<TriangleOrigin> origins = splitNeedles(
+        mesh.triangles, [&](std::uint32_t i) -> const Point3& { return mesh.positions[i]; });
+    mesh.triangleNormals.resize(origins.size());
+    mesh.triangleFaces.resize(origins.size());
+    for (std::size_t t = 0; t < origins.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const CornerOrigin& from = origins[t].corners[k];
+            mesh.triangleNormals[t][k] = normalsBefore[from.triangle][from.corner];
+        }
+        mesh.triangleFaces[t] = facesBefore[origins[t].triangle];
+    }
 
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
