@@ -1259,8 +1259,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // leaves a needle there: its triangle across that chord is split at the point instead.
     const std::vector<std::array<std::uint32_t, 3>> normalsBefore = mesh.triangleNormals;
     const std::vector<std::int32_t> facesBefore = mesh.triangleFaces;
-    const std::vector<TriangleOrigin> origins = splitNeedles(
-        mesh.triangles, [&](std::uint32_t i) -> const Point3& { return mesh.positions[i]; });
+    std::vector<TriangleOrigin> origins;
+    splitNeedles(
+        mesh.triangles, [&](std::uint32_t i) -> const Point3& { return mesh.positions[i]; },
+        &origins);
     mesh.triangleNormals.resize(origins.size());
     mesh.triangleFaces.resize(origins.size());
     for (std::size_t t = 0; t < origins.size(); ++t) {

@@ -38,8 +38,9 @@ TEST(NeedleSplit, TriangleAcrossTheLongSideIsCutAtTheNeedlesCorner) {
     const std::uint32_t a = 0, b = 1, c = 2, d = 3, e = 4;
     Triangles triangles = {{a, c, b}, {a, b, d}, {c, a, e}, {b, c, e}};
     const auto before = unmatchedSides(triangles);
-    const auto origins =
-        splitNeedles(triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; });
+    std::vector<TriangleOrigin> origins;
+    splitNeedles(
+        triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; }, &origins);
     ASSERT_EQ(triangles.size(), 4u);  // the needle went, the triangle across became two
     ASSERT_EQ(origins.size(), triangles.size());
     EXPECT_EQ(unmatchedSides(triangles), before);
