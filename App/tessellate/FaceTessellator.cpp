@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -244,14 +243,12 @@ std::optional<std::pair<int, cInt>> bandSplit(const Paths& region, const Rect& r
         const cInt lo = axis == 0 ? r.x0 : r.y0, hi = axis == 0 ? r.x1 : r.y1;
         const double width = double(hi - lo);
         // a band along the low side: the line through its farthest point, the rest beyond
-        static const double kMin = std::getenv("MINBAND") ? std::atof(std::getenv("MINBAND")) : 0.0;
-        const cInt least = static_cast<cInt>(kMin * width);
-        const auto nearLow = std::max(static_cast<cInt>(std::ceil(high[axis])), lo + least);
+        const auto nearLow = static_cast<cInt>(std::ceil(high[axis]));
         if (nearLow > lo && nearLow < hi - 1 && double(nearLow - lo) / width <= thinnest) {
             thinnest = double(nearLow - lo) / width;
             best = {axis, nearLow};
         }
-        const auto nearHigh = std::min(static_cast<cInt>(std::floor(low[axis])), hi - least);
+        const auto nearHigh = static_cast<cInt>(std::floor(low[axis]));
         if (nearHigh < hi && nearHigh > lo + 1 && double(hi - nearHigh) / width <= thinnest) {
             thinnest = double(hi - nearHigh) / width;
             best = {axis, nearHigh};
