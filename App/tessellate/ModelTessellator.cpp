@@ -1257,20 +1257,21 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // A face's own point that the weld moved onto a point of another face's chord (a thin band
     // of a trimmed cell along its boundary, 1e-6 of a millimetre wide on bottle.brep's thread)
     // leaves a needle there: its triangle across that chord is split at the point instead.
-    const std::vector<std::array<std::uint32_t, 3>> normalsBefore = mesh.triangleNormals;
-    const std::vector<std::int32_t> facesBefore = mesh.triangleFaces;
     std::vector<TriangleOrigin> origins;
-    splitNeedles(
-        mesh.triangles, [&](std::uint32_t i) -> const Point3& { return mesh.positions[i]; },
-        &origins);
-    mesh.triangleNormals.resize(origins.size());
-    mesh.triangleFaces.resize(origins.size());
-    for (std::size_t t = 0; t < origins.size(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const CornerOrigin& from = origins[t].corners[k];
-            mesh.triangleNormals[t][k] = normalsBefore[from.triangle][from.corner];
+    if (splitNeedles(
+            mesh.triangles, [&](std::uint32_t i) -> const Point3& { return mesh.positions[i]; },
+            &origins)) {
+        const auto normalsBefore = std::move(mesh.triangleNormals);
+        const auto facesBefore = std::move(mesh.triangleFaces);
+        mesh.triangleNormals.resize(origins.size());
+        mesh.triangleFaces.resize(origins.size());
+        for (std::size_t t = 0; t < origins.size(); ++t) {
+            for (int k = 0; k < 3; ++k) {
+                const CornerOrigin& from = origins[t].corners[k];
+                mesh.triangleNormals[t][k] = normalsBefore[from.triangle][from.corner];
+            }
+            mesh.triangleFaces[t] = facesBefore[origins[t].triangle];
         }
-        mesh.triangleFaces[t] = facesBefore[origins[t].triangle];
     }
 
     result.seconds =

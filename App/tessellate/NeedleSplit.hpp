@@ -77,11 +77,12 @@ private:
 // weld moved onto a chord. Valid in (u, v), of no area in space. Each needle whose longest side
 // another triangle runs the other way is removed, and that triangle is split at the needle's
 // third corner, which keeps every side shared: the mesh covers the same points as before.
-// `position(i)` gives vertex i's position. Where `origins` is given, it receives the triangles'
-// origins in their new order, so that a caller keeps per-corner and per-triangle attributes
-// with them. Most meshes have no needle: one pass over the triangles finds that out.
+// `position(i)` gives vertex i's position. Returns whether any triangle changed; where one did
+// and `origins` is given, it receives the triangles' origins in their new order, so that a
+// caller keeps per-corner and per-triangle attributes with them. Most meshes have no needle:
+// one pass over the triangles finds that out, and nothing else is done.
 template <class Position>
-void splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Position& position,
+bool splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Position& position,
                   std::vector<TriangleOrigin>* origins = nullptr) {
     auto isNeedle = [&](const std::array<std::uint32_t, 3>& t, int& longest) {
         double longestLength = -1;
@@ -95,6 +96,7 @@ void splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
     std::size_t first = 0;
     for (int longest = 0; first < triangles.size() && !isNeedle(triangles[first], longest);)
         ++first;
+    if (first == triangles.size()) return false;
     if (origins) {
         origins->resize(triangles.size());
         for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -103,7 +105,6 @@ void splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
                 (*origins)[i].corners[k] = {static_cast<std::uint32_t>(i), k};
         }
     }
-    if (first == triangles.size()) return;
     TriangleOfSide triangleOfSide(3 * triangles.size());
     for (std::size_t i = 0; i < triangles.size(); ++i)
         for (int k = 0; k < 3; ++k)
@@ -155,6 +156,7 @@ void splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
         }
     triangles.resize(out);
     if (origins) origins->resize(out);
+    return splits > 0;
 }
 
 }  // namespace nurbslod

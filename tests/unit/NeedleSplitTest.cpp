@@ -39,8 +39,8 @@ TEST(NeedleSplit, TriangleAcrossTheLongSideIsCutAtTheNeedlesCorner) {
     Triangles triangles = {{a, c, b}, {a, b, d}, {c, a, e}, {b, c, e}};
     const auto before = unmatchedSides(triangles);
     std::vector<TriangleOrigin> origins;
-    splitNeedles(
-        triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; }, &origins);
+    EXPECT_TRUE(splitNeedles(
+        triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; }, &origins));
     ASSERT_EQ(triangles.size(), 4u);  // the needle went, the triangle across became two
     ASSERT_EQ(origins.size(), triangles.size());
     EXPECT_EQ(unmatchedSides(triangles), before);
@@ -75,7 +75,8 @@ TEST(NeedleSplit, NeedleOnTheBorderStays) {
     const std::vector<Point3> positions = {{0, 0, 0}, {2, 0, 0}, {0.5, 0, 0}, {1, 1, 0}};
     Triangles triangles = {{0, 2, 1}, {2, 0, 3}, {1, 2, 3}};
     const Triangles before = triangles;
-    splitNeedles(triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; });
+    EXPECT_FALSE(
+        splitNeedles(triangles, [&](std::uint32_t i) -> const Point3& { return positions[i]; }));
     EXPECT_EQ(triangles, before);
 }
 
