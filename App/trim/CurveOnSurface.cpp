@@ -17,10 +17,6 @@ namespace nurbslod {
 
 namespace {
 
-// Highest degree used for the 3D Bezier pieces: the paper caps it (e.g. 20) because the SVD
-// grows with the degree; pieces of higher true degree are subdivided instead.
-constexpr int kMaxChordDegree = 9;
-
 double binomial(int n, int k) {
     double r = 1;
     for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;

@@ -5,13 +5,14 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/SegmentDistance.hpp"
 #include "trim/CurveOnSurface.hpp"
 
 namespace nurbslod {
 namespace {
 
-// A parabola drawn on a plane, (t, a t (1 - t)), is a polynomial curve that the degree-4 Bezier
-// of its surface (degree 1 x 1) and pcurve (degree 2) represents exactly: its largest distance
+// A parabola drawn on a plane, (t, a t (1 - t)), is a polynomial curve of degree 2 (the plane
+// is affine in u and v), which the interpolant represents exactly: its largest distance
 // from the chord is a / 4 at t = 1/2. The whole net's middle point is a / 3 off; the net of the
 // two halves measures the distance itself.
 TEST(ChordBound, ParabolaOnAPlaneIsBoundedByItsSagitta) {
@@ -59,11 +60,50 @@ TEST(ChordBound, HalvesReuseTheirParentsPoints) {
         EXPECT_EQ(cached.residual, fresh.residual) << s0 << " " << s1;
         after.push_back(evaluations);
     }
-    const int n = std::min(curve.bezierDegree(), 9);
+    const int n = std::min(curve.bezierDegree(), kMaxChordDegree);
     EXPECT_EQ(after[0], static_cast<std::size_t>(2 * n + 1));
     // [0, 1/2]: its samples are the whole's samples and midpoints; only its midpoints are new
     EXPECT_EQ(after[1] - after[0], static_cast<std::size_t>(n));
     EXPECT_EQ(after[3] - after[2], static_cast<std::size_t>(n));
+}
+
+// A rational arc on a rational biquadratic patch is a curve of degree 6 over a rational
+// weight, above the interpolant's cap (kMaxChordDegree). Wherever the bound would be taken as
+// it is (a residual within a quarter of it, as flatEnough asks of the chord's share), the curve
+// must lie within it of the chord, and not far inside it: checked at 2001 points of every piece
+// of the first eight halvings, from the whole arc (residual large) to 1/256 of it.
+TEST(ChordBound, CappedDegreeStillBoundsAHigherDegreeCurve) {
+    const BSplineSurface surface(
+        KnotVector(2, {0, 0, 0, 1, 1, 1}), KnotVector(2, {0, 0, 0, 1, 1, 1}), 3, 3,
+        {HomogeneousPoint3(0, 0, 0, 1), HomogeneousPoint3(0, 0.5, 0.4, 0.8),
+         HomogeneousPoint3(0, 1, 0, 1), HomogeneousPoint3(0.4, 0, 0.6, 0.6),
+         HomogeneousPoint3(0.5, 0.5, 1.2, 1.3), HomogeneousPoint3(0.5, 1, -0.2, 0.9),
+         HomogeneousPoint3(1, 0, 0.1, 1), HomogeneousPoint3(1, 0.5, -0.5, 0.7),
+         HomogeneousPoint3(1, 1, 0.3, 1)});
+    const BSplineCurve2d arc(KnotVector(2, {0, 0, 0, 1, 1, 1}),
+                             {HomogeneousPoint2(0.05, 0.1, 1), HomogeneousPoint2(0.3, 0.9, 0.6),
+                              HomogeneousPoint2(0.95, 0.2, 1)});
+    const CurveOnSurface curve(surface, arc, 0, 1);
+    ASSERT_GT(curve.bezierDegree(), kMaxChordDegree);
+    int accepted = 0;
+    for (int level = 0; level <= 8; ++level) {
+        const int pieces = 1 << level;
+        for (int k = 0; k < pieces; ++k) {
+            const double s0 = double(k) / pieces, s1 = double(k + 1) / pieces;
+            const ChordBound bound = chordBound(curve, s0, s1);
+            if (bound.residual > 0.25 * bound.bound) continue;
+            ++accepted;
+            const Point3 a = curve.point(s0), b = curve.point(s1);
+            double farthest = 0;
+            for (int i = 0; i <= 2000; ++i)
+                farthest = std::max(
+                    farthest, distanceToSegment(curve.point(s0 + (s1 - s0) * i / 2000), a, b));
+            EXPECT_LE(farthest, bound.bound) << s0 << " " << s1;
+            // and not far above it: the quarters' hull hugs the curve
+            EXPECT_GE(farthest, 0.5 * bound.bound) << s0 << " " << s1;
+        }
+    }
+    EXPECT_GT(accepted, 400);
 }
 
 }  // namespace
