@@ -12,6 +12,13 @@ measured deviation from `nurbslod verify` (dev = mesh -> face, cover = face -> m
 after welding) and, with --judge, from the independent meshjudge.py (slow: it meshes a
 reference at T/10).
 
+With --kept-deflection, BRepMesh is also compared at equal measured error: it is run again at
+D = T/2, T/4, ... (--kept-halvings, default 4), every mesh verified, and each face takes its
+triangles from the largest D at which that face keeps T both ways. The sum over those faces is
+set beside NurbsLOD's guaranteed triangles on the same faces; faces that keep T at no D are
+counted apart. (Triangles per face of one BRepMesh run; its faces share their edges'
+discretisation, so this is an estimate of what BRepMesh needs, not a mesh it makes.)
+
 Prints a table plus ratio rows (NurbsLOD / BRepMesh for triangles and seconds) and writes it as
 Markdown to docs/benchmark.md and the raw numbers to docs/benchmark.json (--md/--json move them).
 A step that runs past --timeout is recorded as TIMEOUT in the table, never dropped.
@@ -142,6 +149,58 @@ def judge(args, model, mesh, tol, json_path):
     return data
 
 
+def per_face(args, model, mesh, tol, json_path):
+    """{face: (triangles, dev, cover)} from `nurbslod verify --json`, or None."""
+    if os.path.exists(json_path):
+        os.remove(json_path)
+    rc, _, _, _ = run([args.nurbslod, "verify", model, mesh, "--tolerance", repr(tol),
+                       "--threads", "0", "--json", json_path], args.timeout)
+    if rc == "TIMEOUT" or not os.path.exists(json_path):
+        return None
+    with open(json_path) as fh:
+        data = json.load(fh)
+    return {f["face"]: (f["triangles"], f["dev"], f["cover"])
+            for f in data.get("per_face", []) if f.get("measured", True)}
+
+
+def kept_deflection(args, model, tol, workdir, stem, ours_mesh):
+    """BRepMesh at equal measured error, per face (see the module's text)."""
+    ours = per_face(args, model, ours_mesh, tol, os.path.join(workdir, stem + "_ours_faces.json"))
+    if ours is None:
+        return {"error": "verify of NurbsLOD's mesh failed"}
+    kept = {}  # face -> (halvings, triangles)
+    runs = []
+    whole = None  # the first D at which every face keeps T
+    for k in range(args.kept_halvings + 1):
+        d = tol / 2 ** k
+        mesh = os.path.join(workdir, "%s_brepmesh_D%d.obj" % (stem, k))
+        rc, out, _, _ = run([args.timer, model, repr(d), mesh, str(args.threads), "0.5"],
+                            args.timeout)
+        data = last_json(out) if rc != "TIMEOUT" else None
+        faces = per_face(args, model, mesh, tol, mesh + ".faces.json") if data else None
+        if faces is None:
+            runs.append({"deflection": d, "error": "TIMEOUT" if rc == "TIMEOUT" else "failed"})
+            continue
+        good = {f for f, (_, dev, cover) in faces.items() if dev <= tol and cover <= tol}
+        runs.append({"deflection": d, "triangles": data.get("triangles"),
+                     "faces_kept": len(good)})
+        if whole is None and good >= set(ours):
+            whole = {"deflection": d, "triangles": data.get("triangles")}
+        for f in good:
+            kept.setdefault(f, (k, faces[f][0]))
+    kept_faces = sorted(kept)
+    never = sorted(set(ours) - set(kept))
+    result = {
+        "faces": len(ours), "faces_kept": len(kept_faces), "faces_never_kept": never,
+        "brepmesh_triangles": sum(kept[f][1] for f in kept_faces),
+        "ours_triangles": sum(ours[f][0] for f in kept_faces if f in ours),
+        "ours_triangles_never_kept": sum(ours[f][0] for f in never),
+        "halvings_histogram": [sum(1 for f in kept_faces if kept[f][0] == k)
+                               for k in range(args.kept_halvings + 1)],
+        "whole_model": whole, "runs": runs}
+    return result
+
+
 def diagonal(args, model):
     """Bounding-box diagonal from FreeCAD (the same one nurbslod --relative uses)."""
     code = ("import sys; sys.path.append('/usr/lib/freecad-python3/lib'); import FreeCAD, Part; "
@@ -236,6 +295,47 @@ def cpu_model():
     return platform.processor() or "unknown"
 
 
+def kept_line(k):
+    if "error" in k:
+        return k["error"]
+    return ("%d of %d faces keep T at some D; on them BRepMesh %d, NurbsLOD %d triangles (%s); "
+            "never kept: %d faces (NurbsLOD %d triangles); whole model keeps T at %s"
+            % (k["faces_kept"], k["faces"], k["brepmesh_triangles"], k["ours_triangles"],
+               ratio_text(k["ours_triangles"], k["brepmesh_triangles"]),
+               len(k["faces_never_kept"]), k["ours_triangles_never_kept"],
+               "D = %.4g (%d triangles)" % (k["whole_model"]["deflection"],
+                                            k["whole_model"]["triangles"])
+               if k["whole_model"] else "no D tried"))
+
+
+def ratio_text(a, b):
+    q = ratio(a, b)
+    return "%.2fx" % q if q else "-"
+
+
+def kept_rows(results):
+    header = ["model", "R", "faces kept / all", "faces at D = T, T/2, T/4, ...",
+              "BRepMesh triangles", "NurbsLOD triangles", "ratio", "faces never kept",
+              "NurbsLOD triangles there", "whole model keeps T at D/T (triangles)"]
+    rows = []
+    for r in results:
+        k = r.get("kept")
+        if not k or "error" in k:
+            continue
+        w = k["whole_model"]
+        rows.append([r["model"], "%g" % r["relative"], "%d / %d" % (k["faces_kept"], k["faces"]),
+                     " / ".join(str(n) for n in k["halvings_histogram"]),
+                     str(k["brepmesh_triangles"]), str(k["ours_triangles"]),
+                     ratio_text(k["ours_triangles"], k["brepmesh_triangles"]),
+                     ", ".join(str(f) for f in k["faces_never_kept"][:8]) +
+                     (" (%d)" % len(k["faces_never_kept"]) if len(k["faces_never_kept"]) > 8
+                      else "") or "none",
+                     str(k["ours_triangles_never_kept"]),
+                     "%.4g (%d)" % (w["deflection"] / r["tolerance"], w["triangles"]) if w
+                     else "none up to 1/%d" % 2 ** max(0, len(k["runs"]) - 1)])
+    return header, rows
+
+
 def summary_ratios(results):
     """Geometric means over models of the ratios, per R."""
     import math
@@ -267,6 +367,10 @@ def main():
                     help="tessellate each mesh this many times and keep the least seconds "
                     "(default 3)")
     ap.add_argument("--judge-timeout", type=float, default=300, help="per meshjudge run (s)")
+    ap.add_argument("--kept-deflection", action="store_true",
+                    help="also compare with BRepMesh at equal measured error (slow)")
+    ap.add_argument("--kept-halvings", type=int, default=4,
+                    help="BRepMesh deflections tried for --kept-deflection: T / 2^k, k <= this")
     ap.add_argument("--build", default=os.path.join(REPO, "build"))
     ap.add_argument("--md", default=os.path.join(REPO, "docs", "benchmark.md"))
     ap.add_argument("--json", default=os.path.join(REPO, "docs", "benchmark.json"))
@@ -329,6 +433,12 @@ def main():
                          "  judge %s dev/T %s cover/T %s" % (
                              m["judge"]["status"], over(m["judge"], "max_dev", tol),
                              over(m["judge"], "max_cover", tol)) if "judge" in m else ""),
+                      flush=True)
+            if args.kept_deflection and "error" not in entry["methods"][METHODS[0]]["tessellate"]:
+                entry["kept"] = kept_deflection(args, path, tol, workdir, stem,
+                                                entry["methods"][METHODS[0]]["mesh"])
+                print("[%6.0fs] %-28s R=%g brepmesh at equal error: %s"
+                      % (time.perf_counter() - started, model, rel, kept_line(entry["kept"])),
                       flush=True)
             results.append(entry)
     total = time.perf_counter() - started
@@ -393,6 +503,17 @@ def main():
           md_table(header, rows), "",
           "Geometric means of the ratios over models:", ""]
     md += ["- " + line for line in mean_lines]
+    kept_header, kept = kept_rows(results)
+    if kept:
+        md += ["", "## BRepMesh at equal measured error", "",
+               "BRepMesh again at D = T/2^k, k = 0..%d; each face's triangles from the largest D "
+               "at which it keeps T both ways (`nurbslod verify`), beside NurbsLOD's guaranteed "
+               "triangles on the same faces. Faces that keep T at no D are listed apart. An "
+               "estimate: BRepMesh discretises each edge once for both faces, so no single run "
+               "has these per-face counts." % args.kept_halvings, "",
+               md_table(kept_header, kept)]
+        print()
+        print(text_table(kept_header, kept))
     if notes:
         md += ["", "Failures and timeouts:", ""] + notes
     os.makedirs(os.path.dirname(args.md), exist_ok=True)
