@@ -365,6 +365,34 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     return bound;
 }
 
+CellErrorBound::Speed parameterSpeed(const BezierPatch& patch) {
+    const int m = patch.degreeU(), n = patch.degreeV();
+    double lowest = std::numeric_limits<double>::infinity();
+    Point3 low = patch.pole3(0, 0), high = low;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) {
+            lowest = std::min(lowest, patch.pole(i, j)[3]);
+            low = low.cwiseMin(patch.pole3(i, j));
+            high = high.cwiseMax(patch.pole3(i, j));
+        }
+    constexpr double kInfinite = std::numeric_limits<double>::infinity();
+    if (!(lowest > 0)) return {kInfinite, kInfinite};
+    const double reach = (high - low).norm();
+    // degree / W times the largest bracket between neighbours (di, dj) apart
+    auto along = [&](int di, int dj, int degree) {
+        if (degree == 0) return 0.0;
+        double largest = 0;
+        for (int i = 0; i + di <= m; ++i)
+            for (int j = 0; j + dj <= n; ++j) {
+                const double w0 = patch.pole(i, j)[3], w1 = patch.pole(i + di, j + dj)[3];
+                const double step = (patch.pole3(i + di, j + dj) - patch.pole3(i, j)).norm();
+                largest = std::max(largest, w1 * step + std::abs(w1 - w0) * reach);
+            }
+        return degree * largest / lowest;
+    };
+    return {along(1, 0, m), along(0, 1, n)};
+}
+
 double centreDeviation(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
     // Bernstein polynomials at 1/2: C(d, k) / 2^d

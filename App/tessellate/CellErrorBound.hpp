@@ -86,6 +86,32 @@ struct CellErrorBound {
         if (mode == ErrorMode::Approximate) return interior + std::min(twist, planarTwist);
         return trimmedCell ? trimmed() : untrimmed();
     }
+    // Bounds on |dS/ds| and |dS/dt| over the cell, s and t its own parameters in [0, 1]
+    // (parameterSpeed).
+    struct Speed {
+        double s = 0, t = 0;
+    };
+    // Bound for the triangles of a cell whose boundary runs a hair inside its sides (a sloppy
+    // edge's points, moved to where two surfaces meet, beside the iso-line a cell side lies on):
+    // every corner p_k of its polygon can be moved onto the cell's border, p'_k, by at most
+    // `nearU` of the cell's width along u or `nearV` of its height along v, the p'_k keeping the
+    // polygon's order around the border (FaceTessellator's nearSideOffsets). trimmed() would take
+    // the spread and the twist of the whole cell.
+    //  - The moved triangles S(p'_k) have their corners on the cell's sides, in order, so they
+    //    are within untrimmed() of the surface over the cell both ways: they are a triangulation
+    //    of points on a convex border in the border's order, whose flattened triangles tile the
+    //    flattened cell (a limit of strictly convex positions where they do), as for a cell the
+    //    region fills (planarTwist).
+    //  - A triangle point M = sum lambda_k S(p_k) is off its moved point M' by at most
+    //    nu = nearU speed.s + nearV speed.t (each corner moves along one axis).
+    //  - The surface over the cell is within nu of the surface over the polygon: the polygon's
+    //    boundary lies within the bands along the sides, so every point of the cell is within
+    //    nearU in s and nearV in t of the polygon (which holds the cell but for those bands).
+    // Mesh to face: M, M', a point of the surface over the cell, one over the polygon. Face to
+    // mesh: S(x), a point M' of a moved triangle, its M. Both within untrimmed() + 2 nu.
+    double nearSides(const Speed& speed, double nearU, double nearV) const {
+        return untrimmed() + 2 * (nearU * speed.s + nearV * speed.t);
+    }
 };
 
 // Conservative (mode Guaranteed): from the control net of E = (N - w B) / w written in the
@@ -101,6 +127,14 @@ struct CellErrorBound {
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
                               bool trimmedCell = false, bool byDistance = true,
                               double pieceFraction = 1);
+
+// CellErrorBound::Speed of a patch. With poles P_ij, weights w_ij > 0 and W = sum w_ij B_ij,
+//   dS/ds = sum_ij w_ij (dB_ij/ds) (P_ij - S) / W
+//         = m / W sum_kj B_k,m-1 B_j (w_k+1,j (P_k+1,j - S) - w_kj (P_kj - S)),
+// each bracket at most w_k+1,j |P_k+1,j - P_kj| + |w_k+1,j - w_kj| |P_kj - S|, where |P_kj - S|
+// is at most the diagonal of the net's box (S lies in the net's hull) and W at least the least
+// weight. For equal weights: m max |P_k+1,j - P_kj|. The same along t.
+CellErrorBound::Speed parameterSpeed(const BezierPatch& patch);
 
 // |S - B| at the cell's centre, S the patch and B the bilinear interpolant of its corners: a
 // lower bound of every measure in mode Guaranteed (E = S - B is 0 at the corners, which lie on

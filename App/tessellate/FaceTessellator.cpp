@@ -1,6 +1,7 @@
 #include "tessellate/FaceTessellator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -84,6 +85,90 @@ bool isWholeCell(const Paths& piece, const Rect& r) {
         corners += onX && onY;
     }
     return corners == 4;
+}
+
+// How far the corners of cell r's polygon (the region's piece of it: one ring, no hole) lie
+// from the cell's border, for CellErrorBound::nearSides: the largest distance that a corner moves
+// along u onto the border, as a fraction of the cell's width, and along v, of its height. Each
+// segment of the ring goes with the side that its two ends are nearest together (the larger of
+// their distances the least), and each corner moves onto its segments' sides: onto the one
+// side, or into the corner of two. None where a segment keeps more than a quarter of the cell
+// from every side, two segments of a corner go with opposite sides, the moved corners do not
+// keep the ring's order around the border (one turn, never back), or the ring holds no more
+// than the bands along the sides that those distances make (it then holds the cell but for
+// them). A point that the second pass adds on a segment (a cut of another face's cell side)
+// moves onto the line between its ends' moved points, on their side, no farther than they do;
+// two units are added for the rounding of such points to the frame's integers.
+std::optional<std::array<double, 2>> nearSideOffsets(const Paths& piece, const Rect& r) {
+    Paths inside = clip(piece, r, true);
+    if (inside.size() != 1 || inside[0].size() < 3) return std::nullopt;
+    Path& ring = inside[0];
+    const double area = ClipperLib::Area(ring);
+    if (area < 0) std::reverse(ring.begin(), ring.end());
+    const std::size_t count = ring.size();
+    const cInt width = r.x1 - r.x0, height = r.y1 - r.y0;
+    // sides counterclockwise from the bottom: 0 bottom, 1 right, 2 top, 3 left
+    auto fromSide = [&](const IntPoint& p, int side) {
+        switch (side) {
+            case 0:
+                return double(p.Y - r.y0) / double(height);
+            case 1:
+                return double(r.x1 - p.X) / double(width);
+            case 2:
+                return double(r.y1 - p.Y) / double(height);
+            default:
+                return double(p.X - r.x0) / double(width);
+        }
+    };
+    std::vector<int> segmentSide(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const IntPoint &a = ring[i], &b = ring[(i + 1) % count];
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int side = 0; side < 4; ++side) {
+            const double far = std::max(fromSide(a, side), fromSide(b, side));
+            if (far < nearest) nearest = far, segmentSide[i] = side;
+        }
+        if (nearest > 0.25) return std::nullopt;
+    }
+    std::array<double, 2> largest{0, 0};
+    const cInt perimeter = 2 * (width + height);
+    cInt turn = 0, first = 0, previous = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const int before = segmentSide[(i + count - 1) % count], after = segmentSide[i];
+        if ((before - after + 4) % 4 == 2) return std::nullopt;  // opposite sides
+        IntPoint q = ring[i];
+        for (const int side : {before, after}) {
+            if (side % 2 == 0) {
+                q.Y = side == 0 ? r.y0 : r.y1;
+                largest[1] =
+                    std::max(largest[1], double(std::abs(q.Y - ring[i].Y) + 2) / double(height));
+            } else {
+                q.X = side == 1 ? r.x1 : r.x0;
+                largest[0] =
+                    std::max(largest[0], double(std::abs(q.X - ring[i].X) + 2) / double(width));
+            }
+        }
+        // the moved point's place along the border, counterclockwise from (x0, y0)
+        cInt along;
+        if (q.Y == r.y0 && q.X < r.x1)
+            along = q.X - r.x0;
+        else if (q.X == r.x1 && q.Y < r.y1)
+            along = width + (q.Y - r.y0);
+        else if (q.Y == r.y1 && q.X > r.x0)
+            along = width + height + (r.x1 - q.X);
+        else
+            along = 2 * width + height + (r.y1 - q.Y);
+        if (i == 0)
+            first = along;
+        else
+            turn += ((along - previous) % perimeter + perimeter) % perimeter;
+        previous = along;
+    }
+    turn += ((first - previous) % perimeter + perimeter) % perimeter;
+    if (turn != perimeter) return std::nullopt;
+    const double bands = 2 * largest[0] + 2 * largest[1];
+    if (!(std::abs(area) > bands * double(width) * double(height))) return std::nullopt;
+    return largest;
 }
 
 // The smallest rectangle holding every point of `paths` (an empty one, x0 > x1, if none).
@@ -590,6 +675,20 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 leaves_[node.index].leaf = true;
                 continue;
             }
+            // a boundary a hair inside the cell's sides, on a face whose filled cells take the
+            // bound for corners on their sides: the bound for corners near them
+            if (trimmedCell && mode_ == ErrorMode::Guaranteed && choices_.filledCellsBySides &&
+                pieceFraction > 0.5)
+                if (const auto near = nearSideOffsets(*node.region, r)) {
+                    // the bound for corners on the sides, measured for them (not the trimmed
+                    // cell's plain sum)
+                    const CellErrorBound sides =
+                        cellErrorBound(piece, mode_, target, false, choices_.flatCellsByDistance);
+                    if (sides.nearSides(parameterSpeed(piece), (*near)[0], (*near)[1]) <= target) {
+                        leaves_[node.index].leaf = true;
+                        continue;
+                    }
+                }
             preferred = {bound.splitDirection, bound.splitAt};
             sidesWouldDo = trimmedCell && bound.untrimmed() <= target;
         }
