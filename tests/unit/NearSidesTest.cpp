@@ -15,11 +15,9 @@
 #include <gp_Trsf.hxx>
 #include <random>
 
+#include "VerifiedLargestFace.hpp"
 #include "geometry/BezierPatch.hpp"
-#include "occ/MeshVerifier.hpp"
-#include "occ/ModelImporter.hpp"
 #include "tessellate/CellErrorBound.hpp"
-#include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
 namespace {
@@ -39,27 +37,11 @@ TopoDS_Shape cutAtBothEnds(double tilt) {
     return BRepAlgoAPI_Common(BRepAlgoAPI_Common(cone, above).Shape(), below).Shape();
 }
 
-std::size_t coneTriangles(const TopoDS_Shape& shape, double tolerance) {
-    TessellationOptions options;
-    options.tolerance = tolerance;
-    const Model model = occ::importModel(shape);
-    EXPECT_EQ(model.faces.size(), 3u);
-    const TessellationResult result = tessellateModel(model, options);
-    EXPECT_TRUE(result.failures.empty());
-    const auto report = occ::verifyMesh(shape, result.mesh, tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_LE(report.maxDev, tolerance);
-    EXPECT_LE(report.maxCover, tolerance);
-    EXPECT_EQ(report.openEdges, 0u);
-    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
-    for (const auto face : result.mesh.triangleFaces) ++perFace.at(face);
-    return *std::max_element(perFace.begin(), perFace.end());
-}
-
 TEST(NearSides, BoundaryAHairInsideTwoSidesCostsNoSplit) {
     const double tolerance = 0.01;
-    const std::size_t untilted = coneTriangles(cutAtBothEnds(0), tolerance);
-    const std::size_t tilted = coneTriangles(cutAtBothEnds(2e-5), tolerance);
+    const std::size_t untilted = test::verifiedLargestFaceTriangles(cutAtBothEnds(0), tolerance, 3);
+    const std::size_t tilted =
+        test::verifiedLargestFaceTriangles(cutAtBothEnds(2e-5), tolerance, 3);
     EXPECT_GT(untilted, 100u);
     // Measured: 162 untilted (even columns); tilted 444, and 2,101 where the columns were
     // halved until their trimmed bound held.

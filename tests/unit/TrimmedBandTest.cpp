@@ -15,9 +15,7 @@
 #include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 
-#include "occ/MeshVerifier.hpp"
-#include "occ/ModelImporter.hpp"
-#include "tessellate/ModelTessellator.hpp"
+#include "VerifiedLargestFace.hpp"
 
 namespace nurbslod {
 namespace {
@@ -34,26 +32,10 @@ TopoDS_Shape tiltedCut(double tilt) {
     return BRepAlgoAPI_Common(cone, above).Shape();
 }
 
-// The triangles on the cone's face (the one with the most), after checking the whole mesh.
-std::size_t coneTriangles(const TopoDS_Shape& shape, double tolerance) {
-    TessellationOptions options;
-    options.tolerance = tolerance;
-    const Model model = occ::importModel(shape);
-    EXPECT_EQ(model.faces.size(), 3u);
-    const TessellationResult result = tessellateModel(model, options);
-    EXPECT_TRUE(result.failures.empty());
-    const auto report = occ::verifyMesh(shape, result.mesh, tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.openEdges, 0u);
-    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
-    for (const auto face : result.mesh.triangleFaces) ++perFace.at(face);
-    return *std::max_element(perFace.begin(), perFace.end());
-}
-
 TEST(TrimmedBand, BoundaryAHairOffACellSideCostsNoTwist) {
     const double tolerance = 0.01;
-    const std::size_t untilted = coneTriangles(tiltedCut(0), tolerance);
-    const std::size_t tilted = coneTriangles(tiltedCut(2e-4), tolerance);
+    const std::size_t untilted = test::verifiedLargestFaceTriangles(tiltedCut(0), tolerance, 3);
+    const std::size_t tilted = test::verifiedLargestFaceTriangles(tiltedCut(2e-4), tolerance, 3);
     EXPECT_GT(untilted, 100u);
     // Measured: 162 untilted (80 even columns); tilted 640, columns halved to 1/128 and 1/256
     // of the turn and a band each; 2,642 when the columns were halved for their twist.
