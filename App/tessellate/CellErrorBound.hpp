@@ -103,7 +103,8 @@ struct CellErrorBound {
     //    flattened cell (a limit of strictly convex positions where they do), as for a cell the
     //    region fills (planarTwist).
     //  - A triangle point M = sum lambda_k S(p_k) is off its moved point M' by at most
-    //    nu = nearU speed.s + nearV speed.t (each corner moves along one axis).
+    //    nu = nearU speed.s + nearV speed.t (no corner moves farther than nearU in s and nearV
+    //    in t; one in a corner of the cell moves in both).
     //  - The surface over the cell is within nu of the surface over the polygon: the polygon's
     //    boundary lies within the bands along the sides, so every point of the cell is within
     //    nearU in s and nearV in t of the polygon (which holds the cell but for those bands).
