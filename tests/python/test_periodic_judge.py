@@ -2,7 +2,8 @@
 band on a cylinder whose parameter range covers two turns. OpenCASCADE's distance to a face sees
 one turn only, so meshjudge.py's exact re-check measures points of the second turn to the band's
 edge; the wrapper tries every turn. Our mesh of the face, alone, must pass `nurbslod verify` and
-the wrapper alike, and on a face that wraps once the wrapper must change nothing."""
+the wrapper alike, and on a face that wraps once the wrapper must change nothing but the digits
+that its double-precision distances correct."""
 
 import json
 import os
@@ -79,7 +80,21 @@ class PeriodicJudge(unittest.TestCase):
         plain_run, plain = self.judge(JUDGE, model, mesh, tolerance)
         wrapped_run, wrapped = self.judge(WRAPPER, model, mesh, tolerance)
         self.assertEqual(plain_run.returncode, wrapped_run.returncode)
-        self.assertEqual(plain["per_face"], wrapped["per_face"])
+        # The same faces, triangles and surfaces, and the same distances up to the judge's
+        # single precision: the wrapper takes distances over half the tolerance again in double
+        # precision (bottle's coordinates reach 70, where a float's step is 8e-6), so those may
+        # differ in the last digits the judge keeps. Trying every turn would move them by up to
+        # the band's width.
+        self.assertEqual(plain["per_face"].keys(), wrapped["per_face"].keys())
+        for face, measured in plain["per_face"].items():
+            other = wrapped["per_face"][face]
+            self.assertEqual(measured.keys(), other.keys())
+            for key, value in measured.items():
+                if isinstance(value, float):
+                    self.assertAlmostEqual(value, other[key], delta=1e-3 * tolerance,
+                                           msg="face {} {}".format(face, key))
+                else:
+                    self.assertEqual(value, other[key], "face {} {}".format(face, key))
         self.assertNotIn("wraps its surface", wrapped_run.stdout)
 
 
