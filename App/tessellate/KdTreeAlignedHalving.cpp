@@ -6,32 +6,76 @@
 
 namespace nurbslod {
 
-std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
-    const TrimmedSurface& face) {
+std::optional<std::array<KdTreeGrid, 2>> FaceKdTreeLines::both() const {
+    if (!axes[0] || !axes[1]) return std::nullopt;
+    return std::array<KdTreeGrid, 2>{*axes[0], *axes[1]};
+}
+
+FaceKdTreeLines FaceKdTreeLines::of(const std::array<KdTreeGrid, 2>& grids,
+                                    std::array<double, 2> extent) {
+    return {{grids[0], grids[1]}, extent};
+}
+
+FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
     constexpr double kMax = std::numeric_limits<double>::max();
     Point2 low{kMax, kMax}, high{-kMax, -kMax};
     for (const auto& loop : face.loops)
         for (const auto& curve : loop.curves) {
             const CurveOnSurface use(face.surface, curve.pcurve, curve.first, curve.last);
             for (const Point2& p : {use.uv(0), use.uv(1)}) {
-                if (!p.allFinite()) return std::nullopt;
+                if (!p.allFinite()) return {};
                 low = low.cwiseMin(p), high = high.cwiseMax(p);
             }
         }
-    if (!(high.x() > low.x()) || !(high.y() > low.y())) return std::nullopt;
+    FaceKdTreeLines lines;
+    if (low.x() > high.x()) return lines;  // no curve
+    lines.extent = {high.x() - low.x(), high.y() - low.y()};
     const Point2 slack = 1e-12 * (high - low);
+    std::array<bool, 2> inside{high.x() > low.x(), high.y() > low.y()};
     for (const auto& loop : face.loops)
         for (const auto& curve : loop.curves)
             for (const auto& pole : curve.pcurve.poles()) {
-                if (!(pole.z() > 0)) return std::nullopt;  // no convex hull to rely on
+                if (!(pole.z() > 0)) return lines;  // no convex hull to rely on
                 const Point2 p = projectHomogeneous(pole);
-                if (!((p.array() >= (low - slack).array()).all() &&
-                      (p.array() <= (high + slack).array()).all()))
-                    return std::nullopt;
+                for (int axis = 0; axis < 2; ++axis)
+                    inside[axis] = inside[axis] && p[axis] >= low[axis] - slack[axis] &&
+                                   p[axis] <= high[axis] + slack[axis];
             }
-    return std::array<KdTreeGrid, 2>{
-        KdTreeGrid(low.x(), high.x(), face.surface.knotsU().breakpoints()),
-        KdTreeGrid(low.y(), high.y(), face.surface.knotsV().breakpoints())};
+    if (inside[0])
+        lines.axes[0] = KdTreeGrid(low.x(), high.x(), face.surface.knotsU().breakpoints());
+    if (inside[1])
+        lines.axes[1] = KdTreeGrid(low.y(), high.y(), face.surface.knotsV().breakpoints());
+    return lines;
+}
+
+std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
+    const TrimmedSurface& face) {
+    return kdTreeLinesBeforeDiscretisation(face).both();
+}
+
+int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent) {
+    const auto& poles = curve.pcurve().poles();
+    if (poles.size() < 2) return -1;
+    std::vector<Point2> points;
+    for (const auto& pole : poles) {
+        if (!(pole.z() > 0)) return -1;
+        points.push_back(projectHomogeneous(pole));
+        if (!points.back().allFinite()) return -1;
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+        const int across = 1 - axis;
+        if (!(faceExtent[across] > 0)) continue;
+        const double direction = points.back()[axis] - points.front()[axis];
+        bool oneWay = direction != 0;
+        double low = points.front()[across], high = low;
+        for (std::size_t i = 1; i < points.size() && oneWay; ++i) {
+            oneWay = (points[i][axis] - points[i - 1][axis]) * direction >= 0;
+            low = std::min(low, points[i][across]);
+            high = std::max(high, points[i][across]);
+        }
+        if (oneWay && high - low <= kNarrowBand * faceExtent[across]) return axis;
+    }
+    return -1;
 }
 
 namespace {
@@ -66,25 +110,26 @@ PieceHalving halvingOn(const CurveOnSurface& curve, KdTreeGrid grid, int axis) {
 }  // namespace
 
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
-    const std::vector<CurveOnSurface>& uses, std::size_t use,
-    const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
-    double simplification, std::vector<CurvePoints>* points) {
+    const std::vector<CurveOnSurface>& uses, std::size_t use, const FaceKdTreeLines* lines,
+    double approximation, double simplification, std::vector<CurvePoints>* points) {
     const CurveOnSurface& curve = uses.at(use);
-    const auto [axis, isoLine] = cuttingAxisOf(curve);
+    auto [axis, isoLine] = cuttingAxisOf(curve);
+    if (axis < 0 && lines) axis = alongNarrowBand(curve, lines->extent);
     if (axis < 0) return std::nullopt;
     const double c0 = curve.uv(0)[axis], c1 = curve.uv(1)[axis];
-    if (!grids) {
+    if (!lines) {
         // a kd-tree over the curve's own range: only an iso-parameter line has one
         if (!isoLine) return std::nullopt;
         return discretizeEdge(
             uses, approximation, simplification,
             halvingOn(curve, KdTreeGrid(std::min(c0, c1), std::max(c0, c1), {}), axis), points);
     }
+    if (!lines->axes[axis]) return std::nullopt;
     // Span borders first puts them among the points, but a span's halvings are finer than the
     // frame's where the spans are uneven (a whole cylinder's three arcs: 180 points a circle
     // instead of 128 and the 2 borders); the frame's halvings leave the borders to the kd-tree,
     // which adds each as a point. Whichever leaves the curve fewer points.
-    const KdTreeGrid& grid = (*grids)[axis];
+    const KdTreeGrid& grid = *lines->axes[axis];
     auto withBorders = [&](const std::vector<double>& params) {
         std::vector<double> values;
         for (double s : params) values.push_back(curve.uv(s)[axis]);

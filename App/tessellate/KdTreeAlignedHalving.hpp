@@ -12,11 +12,25 @@
 
 namespace nurbslod {
 
-// A face's kd-tree lines (u, then v) as far as they are known before its edges are
-// discretised. FaceTessellator frames the box of the boundary points; where every trimming
-// curve lies within the box of the curves' end points (its control points do: cylinders,
-// cones, the bands between two helices), that box is it, whatever the points in between.
-// None where a curve may bulge past it: the frame then waits for the points.
+// A face's kd-tree lines along each axis (u, then v) as far as they are known before its
+// edges are discretised. FaceTessellator frames the box of the boundary points; along an axis
+// where every trimming curve lies within the box of the curves' end points (its control points
+// do: cylinders, cones, the bands between two helices), that box is it, whatever the points in
+// between. None along an axis where a curve may bulge past it: the frame then waits for the
+// points. A sloppy band's side that wanders a hair past its iso-line leaves the other axis
+// known (bottle.brep's thread flanks: their columns are known, their rows are not).
+struct FaceKdTreeLines {
+    std::array<std::optional<KdTreeGrid>, 2> axes;
+    // the box of the curves' end points, per axis (0 where unknown)
+    std::array<double, 2> extent{0, 0};
+
+    // both axes, as FaceTessellator's even columns need them
+    std::optional<std::array<KdTreeGrid, 2>> both() const;
+    static FaceKdTreeLines of(const std::array<KdTreeGrid, 2>& grids, std::array<double, 2> extent);
+};
+FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face);
+
+// Both axes' lines where both are known.
 std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
     const TrimmedSurface& face);
 
@@ -25,14 +39,21 @@ std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
 // kd-tree cuts that curve on. The points then fall where that face's kd-tree cuts, and its
 // cells add none between them. The axis is the one varying along an iso-parameter line, or the
 // bent one across a straight curve on a surface straight the other way (a helix on a
-// cylinder: u). Without `grids` (a face whose frame waits for its points) the lines are those
-// of a kd-tree over the curve's own range, for an iso-parameter line: that at least puts a
-// face's curves of one range (a cylinder's two circles) on one grid. None where the curve is
-// not straight in (u, v) or no axis is clear (a diagonal on a plane, whose kd-tree does not
-// cut for error).
+// cylinder: u), or the one a curve runs along within a narrow band across it (alongNarrowBand).
+// Without `lines` (a face whose frame waits for its points) the lines are those of a kd-tree
+// over the curve's own range, for an iso-parameter line: that at least puts a face's curves of
+// one range (a cylinder's two circles) on one grid. None where no axis is clear (a diagonal on
+// a plane, whose kd-tree does not cut for error) or its lines are not known.
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
-    const std::vector<CurveOnSurface>& uses, std::size_t use,
-    const std::optional<std::array<KdTreeGrid, 2>>& grids, double approximation,
-    double simplification, std::vector<CurvePoints>* points = nullptr);
+    const std::vector<CurveOnSurface>& uses, std::size_t use, const FaceKdTreeLines* lines,
+    double approximation, double simplification, std::vector<CurvePoints>* points = nullptr);
+
+// The axis a curve that is not straight in (u, v) runs along, where it runs one way along it
+// (its control points in order: by variation diminishing no line across meets it twice) and
+// stays within a band across it of at most kNarrowBand of the face's extent there: a sloppy
+// band's side, a hair off its iso-line, which the face's columns cut as they cut the iso-line
+// (bottle.brep's thread flanks, whose long sides wander 0.8% of the flank's width). -1: none.
+inline constexpr double kNarrowBand = 0.125;
+int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent);
 
 }  // namespace nurbslod

@@ -28,6 +28,7 @@ public:
         return pcurve_->degree() * (surface_->degreeU() + surface_->degreeV());
     }
     const BSplineSurface& surface() const { return *surface_; }
+    const BSplineCurve2d& pcurve() const { return *pcurve_; }
     // Whether the trimming curve runs along one straight line in the (u, v) plane, one way
     // (an iso-parameter line of a cylinder, a cone, a plane). Then the surface maps every
     // (u, v) segment between two of its points onto the curve itself: a chord's error is the

@@ -91,9 +91,12 @@ protected:
                                 const std::optional<std::array<KdTreeGrid, 2>>& grids,
                                 bool onLines = true) {
         const std::vector<CurveOnSurface> curve{CurveOnSurface(surface, pcurve, 0, 1)};
+        const std::optional<FaceKdTreeLines> lines =
+            grids ? std::optional(FaceKdTreeLines::of(*grids, {1, 1})) : std::nullopt;
         const std::vector<double> params =
-            onLines ? discretizeEdgeOnKdTreeLines(curve, 0, grids, 1e-4, 0).value()
-                    : discretizeEdge(curve, 1e-4, 0);
+            onLines
+                ? discretizeEdgeOnKdTreeLines(curve, 0, lines ? &*lines : nullptr, 1e-4, 0).value()
+                : discretizeEdge(curve, 1e-4, 0);
         std::set<long long> steps;
         for (double s : params)
             steps.insert(std::llround(curve[0].uv(s).x() * double(kKdTreeFrameScale)));
@@ -150,6 +153,67 @@ TEST_F(QuarterCylinder, GridsAreKnownWhereEveryCurveStaysInTheEndsBox) {
         KnotVector(2, {0, 0, 0, 1, 1, 1}),
         {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(-0.2, 0.5, 1), HomogeneousPoint2(0, 0, 1)});
     EXPECT_FALSE(kdTreeGridsBeforeDiscretisation(face).has_value());
+}
+
+// A bottom side that bulges a hair below v = 0 (a sloppy band's side off its iso-line): a
+// quadratic in (u, v), running one way along u, unevenly.
+BSplineCurve2d bulgingLine(double depth) {
+    return BSplineCurve2d(KnotVector(2, {0, 0, 0, 1, 1, 1}),
+                          {HomogeneousPoint2(0, 0, 1), HomogeneousPoint2(0.3, -depth, 1),
+                           HomogeneousPoint2(1, 0, 1)});
+}
+
+TEST_F(QuarterCylinder, ASideAHairOffItsIsoLineIsHalvedOnTheColumnsLines) {
+    TrimmedSurface face;
+    face.surface = surface;
+    TrimLoop loop;
+    auto add = [&](BSplineCurve2d pcurve) {
+        TrimCurve curve;
+        curve.pcurve = std::move(pcurve);
+        loop.curves.push_back(std::move(curve));
+    };
+    add(bulgingLine(0.004));
+    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
+                       {HomogeneousPoint2(1, 0, 1), HomogeneousPoint2(1, 1, 1)}));
+    add(top);
+    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
+                       {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(0, 0, 1)}));
+    face.loops.push_back(loop);
+    // the columns are known, the rows wait for the boundary's points
+    const FaceKdTreeLines lines = kdTreeLinesBeforeDiscretisation(face);
+    ASSERT_TRUE(lines.axes[0].has_value());
+    EXPECT_FALSE(lines.axes[1].has_value());
+    EXPECT_FALSE(lines.both().has_value());
+    EXPECT_EQ(lines.extent[1], 1);
+
+    auto steps = [&](const BSplineCurve2d& pcurve, bool onLines) {
+        const std::vector<CurveOnSurface> curve{CurveOnSurface(surface, pcurve, 0, 1)};
+        const std::vector<double> params =
+            onLines ? discretizeEdgeOnKdTreeLines(curve, 0, &lines, 1e-4, 0).value()
+                    : discretizeEdge(curve, 1e-4, 0);
+        std::set<long long> out;
+        for (double s : params)
+            out.insert(std::llround(curve[0].uv(s).x() * double(kKdTreeFrameScale)));
+        return out;
+    };
+    // both long sides get their points on the same columns: the kd-tree's columns through the
+    // one side's points meet the other's points too
+    const auto bottomSteps = steps(bulgingLine(0.004), true), topSteps = steps(top, true);
+    EXPECT_GT(bottomSteps.size(), 16u);
+    EXPECT_EQ(bottomSteps, topSteps);
+    // halved in its own parameter the side's points are elsewhere
+    EXPECT_NE(steps(bulgingLine(0.004), false), topSteps);
+
+    // a curve that leaves the band, or turns back along it, is not halved on the lines
+    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, bulgingLine(0.004), 0, 1), {1, 1}), 0);
+    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, bulgingLine(0.3), 0, 1), {1, 1}), -1);
+    const BSplineCurve2d turning(
+        KnotVector(2, {0, 0, 0, 1, 1, 1}),
+        {HomogeneousPoint2(0, 0, 1), HomogeneousPoint2(1.2, -0.01, 1), HomogeneousPoint2(1, 0, 1)});
+    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, turning, 0, 1), {1, 1}), -1);
+    const BSplineCurve2d wideLine = bulgingLine(0.3);
+    const std::vector<CurveOnSurface> wide{CurveOnSurface(surface, wideLine, 0, 1)};
+    EXPECT_FALSE(discretizeEdgeOnKdTreeLines(wide, 0, &lines, 1e-4, 0).has_value());
 }
 
 }  // namespace
