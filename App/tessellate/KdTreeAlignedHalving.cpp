@@ -53,7 +53,8 @@ std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
     return kdTreeLinesBeforeDiscretisation(face).both();
 }
 
-int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent) {
+int axisAlong(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent,
+              BentCurves rule) {
     const auto& poles = curve.pcurve().poles();
     if (poles.size() < 2) return -1;
     std::vector<Point2> points;
@@ -62,6 +63,7 @@ int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& fa
         points.push_back(projectHomogeneous(pole));
         if (!points.back().allFinite()) return -1;
     }
+    const BSplineSurface& surface = curve.surface();
     for (int axis = 0; axis < 2; ++axis) {
         const int across = 1 - axis;
         if (!(faceExtent[across] > 0)) continue;
@@ -73,7 +75,11 @@ int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& fa
             low = std::min(low, points[i][across]);
             high = std::max(high, points[i][across]);
         }
-        if (oneWay && high - low <= kNarrowBand * faceExtent[across]) return axis;
+        if (!oneWay) continue;
+        if (high - low <= kNarrowBand * faceExtent[across]) return axis;
+        const int degreeAlong = axis == 0 ? surface.degreeU() : surface.degreeV();
+        const int degreeAcross = axis == 0 ? surface.degreeV() : surface.degreeU();
+        if (rule == BentCurves::onRuledSurface && degreeAcross == 1 && degreeAlong > 1) return axis;
     }
     return -1;
 }
@@ -111,10 +117,11 @@ PieceHalving halvingOn(const CurveOnSurface& curve, KdTreeGrid grid, int axis) {
 
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     const std::vector<CurveOnSurface>& uses, std::size_t use, const FaceKdTreeLines* lines,
-    double approximation, double simplification, std::vector<CurvePoints>* points) {
+    double approximation, double simplification, std::vector<CurvePoints>* points,
+    BentCurves rule) {
     const CurveOnSurface& curve = uses.at(use);
     auto [axis, isoLine] = cuttingAxisOf(curve);
-    if (axis < 0 && lines) axis = alongNarrowBand(curve, lines->extent);
+    if (axis < 0 && lines) axis = axisAlong(curve, lines->extent, rule);
     if (axis < 0) return std::nullopt;
     const double c0 = curve.uv(0)[axis], c1 = curve.uv(1)[axis];
     if (!lines) {

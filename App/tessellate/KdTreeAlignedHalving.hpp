@@ -34,26 +34,38 @@ FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face);
 std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
     const TrimmedSurface& face);
 
+// Which curves that are not straight in (u, v) take a face's lines along an axis they run one
+// way along (their control points in order: by variation diminishing no line across meets
+// them twice):
+//  - narrowBand: those within a band across the axis of at most kNarrowBand of the face's
+//    extent there: a sloppy band's side, a hair off its iso-line, which the face's columns cut
+//    as they cut the iso-line (bottle.brep's thread flanks, whose long sides wander 0.8% of the
+//    flank's width);
+//  - onRuledSurface: also those of any width on a surface straight across the axis (degree 1
+//    there, bent along it), whose kd-tree cuts only along the bent axis for error, as for a
+//    straight curve across it (a sloppy helix on a cylinder).
+// Narrow bands first: a band's two long sides then share its columns, which the other face of
+// a side would otherwise take (bottle.brep's helices, on the thread's flanks and on the
+// cylinder they wind around).
+enum class BentCurves { narrowBand, onRuledSurface };
+inline constexpr double kNarrowBand = 0.125;
+// The axis `curve` runs along under `rule`, -1: none.
+int axisAlong(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent,
+              BentCurves rule);
+
 // Discretises an edge (discretizeEdge) with its pieces halved on kd-tree lines of the face of
 // uses[use]: at the coarsest line crossing the middle half of a piece, along the axis the
 // kd-tree cuts that curve on. The points then fall where that face's kd-tree cuts, and its
 // cells add none between them. The axis is the one varying along an iso-parameter line, or the
 // bent one across a straight curve on a surface straight the other way (a helix on a
-// cylinder: u), or the one a curve runs along within a narrow band across it (alongNarrowBand).
+// cylinder: u), or the one a bent curve runs along (axisAlong, under `rule`).
 // Without `lines` (a face whose frame waits for its points) the lines are those of a kd-tree
 // over the curve's own range, for an iso-parameter line: that at least puts a face's curves of
 // one range (a cylinder's two circles) on one grid. None where no axis is clear (a diagonal on
 // a plane, whose kd-tree does not cut for error) or its lines are not known.
 std::optional<std::vector<double>> discretizeEdgeOnKdTreeLines(
     const std::vector<CurveOnSurface>& uses, std::size_t use, const FaceKdTreeLines* lines,
-    double approximation, double simplification, std::vector<CurvePoints>* points = nullptr);
-
-// The axis a curve that is not straight in (u, v) runs along, where it runs one way along it
-// (its control points in order: by variation diminishing no line across meets it twice) and
-// stays within a band across it of at most kNarrowBand of the face's extent there: a sloppy
-// band's side, a hair off its iso-line, which the face's columns cut as they cut the iso-line
-// (bottle.brep's thread flanks, whose long sides wander 0.8% of the flank's width). -1: none.
-inline constexpr double kNarrowBand = 0.125;
-int alongNarrowBand(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent);
+    double approximation, double simplification, std::vector<CurvePoints>* points = nullptr,
+    BentCurves rule = BentCurves::narrowBand);
 
 }  // namespace nurbslod

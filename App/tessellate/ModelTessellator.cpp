@@ -420,7 +420,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     };
     // The kd-tree lines of each face whose frame is known before its edges are discretised
     // (KdTreeAlignedHalving). An edge halves its pieces on the lines of one face it is straight
-    // in, or runs along within a narrow band: its curve use's if it can, another's otherwise.
+    // in or runs along (BentCurves: narrow bands first): its curve use's if it can, another's
+    // otherwise.
     // The points of the edge then lie where that face's kd-tree cuts, and its cells add no
     // points between them. Where only one axis is known (a sloppy band's side a hair past its
     // iso-line), its lines still place the points of the curves that run along it (faceLines):
@@ -557,16 +558,18 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (curveUse[e] >= 0) order.push_back(static_cast<size_t>(curveUse[e]));
         for (size_t k = 0; k < curves.size(); ++k)
             if (static_cast<int>(k) != curveUse[e]) order.push_back(k);
-        for (size_t k : order) {
-            const int f = uses[e][k].face;
-            // both axes with their even columns where known, else the axes that are
-            const FaceKdTreeLines lines =
-                faceGrids[f] ? FaceKdTreeLines::of(*faceGrids[f], faceLines[f].extent)
-                             : faceLines[f];
-            if (auto params = discretizeEdgeOnKdTreeLines(curves, k, &lines, edge.lineApproximation,
-                                                          edge.lineSimplification, &points))
-                return params;
-        }
+        for (const BentCurves rule : {BentCurves::narrowBand, BentCurves::onRuledSurface})
+            for (size_t k : order) {
+                const int f = uses[e][k].face;
+                // both axes with their even columns where known, else the axes that are
+                const FaceKdTreeLines lines =
+                    faceGrids[f] ? FaceKdTreeLines::of(*faceGrids[f], faceLines[f].extent)
+                                 : faceLines[f];
+                if (auto params =
+                        discretizeEdgeOnKdTreeLines(curves, k, &lines, edge.lineApproximation,
+                                                    edge.lineSimplification, &points, rule))
+                    return params;
+            }
         if (curveUse[e] < 0) return std::nullopt;
         return discretizeEdgeOnKdTreeLines(curves, curveUse[e], nullptr, edge.lineApproximation,
                                            edge.lineSimplification, &points);

@@ -204,15 +204,40 @@ TEST_F(QuarterCylinder, ASideAHairOffItsIsoLineIsHalvedOnTheColumnsLines) {
     // halved in its own parameter the side's points are elsewhere
     EXPECT_NE(steps(bulgingLine(0.004), false), topSteps);
 
-    // a curve that leaves the band, or turns back along it, is not halved on the lines
-    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, bulgingLine(0.004), 0, 1), {1, 1}), 0);
-    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, bulgingLine(0.3), 0, 1), {1, 1}), -1);
+    // a curve that leaves the band, or turns back along it, is not halved on the lines; one
+    // that leaves the band runs along u on a cylinder, straight in v, where that is allowed
+    const BSplineCurve2d narrowLine = bulgingLine(0.004), wideLine = bulgingLine(0.3);
+    const CurveOnSurface narrowCurve(surface, narrowLine, 0, 1);
+    const CurveOnSurface wideCurve(surface, wideLine, 0, 1);
+    EXPECT_EQ(axisAlong(narrowCurve, {1, 1}, BentCurves::narrowBand), 0);
+    EXPECT_EQ(axisAlong(wideCurve, {1, 1}, BentCurves::narrowBand), -1);
+    EXPECT_EQ(axisAlong(wideCurve, {1, 1}, BentCurves::onRuledSurface), 0);
     const BSplineCurve2d turning(
         KnotVector(2, {0, 0, 0, 1, 1, 1}),
         {HomogeneousPoint2(0, 0, 1), HomogeneousPoint2(1.2, -0.01, 1), HomogeneousPoint2(1, 0, 1)});
-    EXPECT_EQ(alongNarrowBand(CurveOnSurface(surface, turning, 0, 1), {1, 1}), -1);
-    const BSplineCurve2d wideLine = bulgingLine(0.3);
-    const std::vector<CurveOnSurface> wide{CurveOnSurface(surface, wideLine, 0, 1)};
+    EXPECT_EQ(axisAlong(CurveOnSurface(surface, turning, 0, 1), {1, 1}, BentCurves::onRuledSurface),
+              -1);
+    // the same wide curve on a plane (straight both ways): no axis is clear
+    const BSplineSurface plane(KnotVector(1, {0, 0, 1, 1}), KnotVector(1, {0, 0, 1, 1}), 2, 2,
+                               {HomogeneousPoint3(0, 0, 0, 1), HomogeneousPoint3(0, 1, 0, 1),
+                                HomogeneousPoint3(1, 0, 0, 1), HomogeneousPoint3(1, 1, 0, 1)});
+    EXPECT_EQ(axisAlong(CurveOnSurface(plane, wideLine, 0, 1), {1, 1}, BentCurves::onRuledSurface),
+              -1);
+    const std::vector<CurveOnSurface> wide{wideCurve};
+    // allowed, its points are on the columns' lines (the 4,096 coarsest); halved in its own
+    // parameter they are not
+    const auto wideParams =
+        discretizeEdgeOnKdTreeLines(wide, 0, &lines, 1e-4, 0, nullptr, BentCurves::onRuledSurface);
+    ASSERT_TRUE(wideParams.has_value());
+    auto offLines = [&](const std::vector<double>& params) {
+        int off = 0;
+        for (double s : params)
+            off += std::llround(wideCurve.uv(s).x() * double(kKdTreeFrameScale)) % (1 << 18) != 0;
+        return off;
+    };
+    EXPECT_GT(wideParams->size(), 16u);
+    EXPECT_EQ(offLines(*wideParams), 0);
+    EXPECT_GT(offLines(discretizeEdge(wide, 1e-4, 0)), 0);
     EXPECT_FALSE(discretizeEdgeOnKdTreeLines(wide, 0, &lines, 1e-4, 0).has_value());
 }
 
