@@ -32,6 +32,18 @@ TopoDS_Shape tiltedCut(double tilt) {
     return BRepAlgoAPI_Common(cone, above).Shape();
 }
 
+// The same cone below the plane through (0, 0, 5) tilted by `tilt` about the y axis: its bottom
+// stays whole, its top is an ellipse (three faces, every edge shared).
+TopoDS_Shape tiltedTop(double tilt) {
+    const TopoDS_Shape cone =
+        BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, -1), gp::DZ()), 10.5, 6, 9).Shape();
+    gp_Trsf rotation;
+    rotation.SetRotation(gp_Ax1(gp_Pnt(0, 0, 5), gp::DY()), tilt);
+    const TopoDS_Shape below = BRepBuilderAPI_Transform(
+        BRepPrimAPI_MakeBox(gp_Pnt(-50, -50, -95), 100, 100, 100).Shape(), rotation);
+    return BRepAlgoAPI_Common(cone, below).Shape();
+}
+
 TEST(TrimmedBand, BoundaryAHairOffACellSideCostsNoTwist) {
     const double tolerance = 0.01;
     const std::size_t untilted = test::verifiedLargestFaceTriangles(tiltedCut(0), tolerance, 3);
@@ -40,6 +52,20 @@ TEST(TrimmedBand, BoundaryAHairOffACellSideCostsNoTwist) {
     // Measured: 162 untilted (80 even columns); tilted 640, columns halved to 1/128 and 1/256
     // of the turn and a band each; 2,642 when the columns were halved for their twist.
     EXPECT_LE(double(tilted), 5.0 * double(untilted)) << tilted << " against " << untilted;
+}
+
+// The same cone cut at its top by a plane tilted 0.3 rad: the cut is an ellipse that rises
+// through most of the cone's height, so the columns under its low side hold it in their upper
+// part only. Split
+// off as a band up to three quarters of the column (kWidestBand), the rest below is a filled
+// cell whose own bound takes wide columns; split as a trimmed cell, every column kept the whole
+// height and cut the bottom circle, whose points are also the base's.
+TEST(TrimmedBand, WideBandsLeaveTheRestOfTheColumnFilled) {
+    const double tolerance = 0.01;
+    const std::size_t cone = test::verifiedLargestFaceTriangles(tiltedTop(0.3), tolerance, 3);
+    // Measured: 760; 1,076 with bands of at most a quarter of the cell, 768 at most a half.
+    EXPECT_GT(cone, 100u);
+    EXPECT_LE(cone, 900u);
 }
 
 }  // namespace
