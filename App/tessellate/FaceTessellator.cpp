@@ -685,11 +685,12 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y()));
             // not where the cell reaches past its span (a frame past the surface's domain): the
             // piece is then the span's part within it, clamped, and no longer maps the cell
-            // linearly
+            // linearly. A side on a span border rounded to the frame's step is on it.
             const auto& breaksU = patches_.breakpointsU();
             const auto& breaksV = patches_.breakpointsV();
-            if (low.x() >= breaksU[su] && high.x() <= breaksU[su + 1] && low.y() >= breaksV[sv] &&
-                high.y() <= breaksV[sv + 1])
+            const double stepU = 1 / frame_->scaleU, stepV = 1 / frame_->scaleV;
+            if (low.x() >= breaksU[su] - stepU && high.x() <= breaksU[su + 1] + stepU &&
+                low.y() >= breaksV[sv] - stepV && high.y() <= breaksV[sv + 1] + stepV)
                 childrenPiece = ownPiece;
         }
         const BezierPatch& piece = *ownPiece;
