@@ -22,8 +22,6 @@ std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
     const double last = std::floor((c1 - quarter - low_) * scale_);
     if (!(first <= last) || first < 1 || last > double(kKdTreeFrameScale - 1)) return std::nullopt;
     const auto lo = static_cast<std::int64_t>(first), hi = static_cast<std::int64_t>(last);
-
-    if (!bordersFirst_) return halvingWithin(0, kKdTreeFrameScale, lo, hi);
     const std::int64_t middle = lo + (hi - lo) / 2;
     std::optional<std::int64_t> border;
     for (std::int64_t b : breaks_)
@@ -103,24 +101,6 @@ std::optional<double> KdTreeGrid::halvingWithin(std::int64_t a, std::int64_t b, 
             b = m;
     }
     return std::nullopt;
-}
-
-KdTreeGrid KdTreeGrid::halvingsOnly() const {
-    KdTreeGrid grid = *this;
-    grid.bordersFirst_ = false;
-    return grid;
-}
-
-std::size_t KdTreeGrid::bordersBetween(const std::vector<double>& values) const {
-    if (values.empty()) return 0;
-    std::vector<std::int64_t> steps;
-    for (double value : values) steps.push_back(stepOf(value));
-    std::sort(steps.begin(), steps.end());
-    std::size_t count = 0;
-    for (std::int64_t b : breaks_)
-        count += b > steps.front() && b < steps.back() &&
-                 !std::binary_search(steps.begin(), steps.end(), b);
-    return count;
 }
 
 }  // namespace nurbslod

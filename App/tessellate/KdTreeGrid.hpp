@@ -31,16 +31,6 @@ public:
     // the interval is below the frame's resolution or outside the frame.
     std::optional<double> lineWithin(double c0, double c1) const;
 
-    // The same frame, its lines only the halvings of the whole frame: the span borders are cut
-    // all the same, but only where a cell holds one (bordersBetween counts those).
-    KdTreeGrid halvingsOnly() const;
-    // Whether a span border lies inside the frame (else the halvings are the only lines).
-    bool hasBorders() const { return !breaks_.empty(); }
-
-    // How many span borders lie strictly between the smallest and the largest of `values` and
-    // on none of them: the points the kd-tree's first cuts add to a curve with those points.
-    std::size_t bordersBetween(const std::vector<double>& values) const;
-
     // Even columns: the kd-tree may cut an interval between span borders into k equal columns
     // rather than halve it (a half cylinder whose bound allows 47 columns gets 47, not 64). It
     // then splits a cell of several columns at the column line in its middle, by count, and a
@@ -77,7 +67,6 @@ private:
     std::int64_t stepOf(double value) const { return std::llround((value - low_) * scale_); }
 
     double low_ = 0, scale_ = 1;
-    bool bordersFirst_ = true;
     // The interval between span borders (or the frame's ends) that ends at or after x: its
     // borders a, b and its index in intervals().
     struct Interval {

@@ -137,7 +137,9 @@ TEST(FaceErrorBudget, PlanarFaceGetsFewerBoundaryPointsAndStaysWithinTolerance) 
 // splits its side through the circles' own points instead of between them. Its side then has
 // two triangles per chord of a circle: before, the circles carried the chords and the columns
 // both (1,020 triangles in all here; 516 with the columns halved, 392 with even columns, see
-// chooseEvenColumns; the side 198, and 416 with plain halving and no even columns).
+// chooseEvenColumns; the side 198, and 240 with plain halving and no even columns: the circles'
+// points lie on the lines the kd-tree halves on, KdTreeAlignedHalving, which plain halving
+// meets where the span borders leave it even; 416 when they took the frame's halvings).
 TEST(FaceErrorBudget, WholeCylinderSplitsThroughItsCirclesPoints) {
     const double radius = 3.0, t = 2e-3;
     const TopoDS_Shape shape = BRepPrimAPI_MakeCylinder(radius, 10.0).Shape();
@@ -166,7 +168,7 @@ TEST(FaceErrorBudget, WholeCylinderSplitsThroughItsCirclesPoints) {
     const auto halved = tessellateModel(model, halving);
     std::size_t halvedSideTriangles = 0;
     for (const auto face : halved.mesh.triangleFaces) halvedSideTriangles += face == side;
-    EXPECT_LT(double(sideTriangles), 0.8 * double(halvedSideTriangles))
+    EXPECT_LT(double(sideTriangles), 0.9 * double(halvedSideTriangles))
         << sideTriangles << " vs " << halvedSideTriangles;
     // the budget of such a face: no trimming share, the rest on its surface
     const ErrorBudget whole = ErrorBudget::forChordsOnSurface(t, ErrorMode::Guaranteed);

@@ -115,18 +115,21 @@ TEST_F(QuarterCylinder, CirclesHalvedOnTheKdTreeLinesShareTheirPoints) {
     EXPECT_NE(stepsOf(bottom, {}, false), stepsOf(top, {}, false));
 }
 
-// Span borders cut first make a span's halvings the lines; where the spans are uneven those are
-// finer than the frame's halvings, and the frame's halvings with the borders added win.
-TEST_F(QuarterCylinder, UnevenSpansKeepTheFrameHalvings) {
+// Span borders cut first, then each span's halvings, as the kd-tree cuts: the border is one of
+// the points, and the two circles, parameterised unlike each other, share every point of the
+// one with fewer; the frame's halvings, which know no border, do not put a point on it.
+TEST_F(QuarterCylinder, UnevenSpansPutTheBorderAmongThePoints) {
     const std::array<KdTreeGrid, 2> grids{KdTreeGrid(0, 1, {0, 0.37, 1}), KdTreeGrid(0, 1, {})};
-    const auto onGrid = stepsOf(bottom, grids);
-    const auto frameHalvings = stepsOf(bottom, std::nullopt);
     const auto border = std::llround(0.37 * double(kKdTreeFrameScale));
-    // the points the circle ends up with (the kd-tree adds the border where it is not one) are
-    // no more than with the frame's halvings, which are the points over the whole range [0, 1]
-    const std::size_t carried = onGrid.size() + (onGrid.count(border) ? 0 : 1);
-    EXPECT_LE(carried, frameHalvings.size() + 1);
-    EXPECT_GT(frameHalvings.size(), 16u);
+    const auto bottomSteps = stepsOf(bottom, grids);
+    EXPECT_GT(bottomSteps.size(), 16u);
+    EXPECT_EQ(bottomSteps.count(border), 1u);
+    const auto topSteps = stepsOf(top, grids);
+    std::vector<long long> shared;
+    std::set_intersection(bottomSteps.begin(), bottomSteps.end(), topSteps.begin(), topSteps.end(),
+                          std::back_inserter(shared));
+    EXPECT_EQ(shared.size(), bottomSteps.size()) << topSteps.size();
+    EXPECT_EQ(stepsOf(bottom, std::nullopt).count(border), 0u);
 }
 
 TEST_F(QuarterCylinder, GridsAreKnownWhereEveryCurveStaysInTheEndsBox) {
