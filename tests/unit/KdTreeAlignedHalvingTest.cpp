@@ -86,6 +86,26 @@ protected:
     const BSplineCurve2d bottom = evenLine(0);
     const BSplineCurve2d top = unevenLine(1, 0.3);
 
+    // the face over the whole quarter, with `bottomSide` along v = 0 and the top circle
+    TrimmedSurface faceWithBottom(BSplineCurve2d bottomSide) const {
+        TrimmedSurface face;
+        face.surface = surface;
+        TrimLoop loop;
+        auto add = [&](BSplineCurve2d pcurve) {
+            TrimCurve curve;
+            curve.pcurve = std::move(pcurve);
+            loop.curves.push_back(std::move(curve));
+        };
+        add(std::move(bottomSide));
+        add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
+                           {HomogeneousPoint2(1, 0, 1), HomogeneousPoint2(1, 1, 1)}));
+        add(top);
+        add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
+                           {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(0, 0, 1)}));
+        face.loops.push_back(loop);
+        return face;
+    }
+
     // the frame steps of an edge's points in u, discretised alone with or without the grids
     std::set<long long> stepsOf(const BSplineCurve2d& pcurve,
                                 const std::optional<std::array<KdTreeGrid, 2>>& grids,
@@ -133,21 +153,7 @@ TEST_F(QuarterCylinder, UnevenSpansPutTheBorderAmongThePoints) {
 }
 
 TEST_F(QuarterCylinder, GridsAreKnownWhereEveryCurveStaysInTheEndsBox) {
-    TrimmedSurface face;
-    face.surface = surface;
-    TrimLoop loop;
-    auto add = [&](BSplineCurve2d pcurve) {
-        TrimCurve curve;
-        curve.pcurve = std::move(pcurve);
-        loop.curves.push_back(std::move(curve));
-    };
-    add(bottom);
-    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
-                       {HomogeneousPoint2(1, 0, 1), HomogeneousPoint2(1, 1, 1)}));
-    add(top);
-    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
-                       {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(0, 0, 1)}));
-    face.loops.push_back(loop);
+    TrimmedSurface face = faceWithBottom(bottom);
     const auto grids = kdTreeGridsBeforeDiscretisation(face);
     ASSERT_TRUE(grids.has_value());
     EXPECT_EQ((*grids)[0].lineWithin(0, 1).value(), 0.5);
@@ -167,21 +173,7 @@ BSplineCurve2d bulgingLine(double depth) {
 }
 
 TEST_F(QuarterCylinder, ASideAHairOffItsIsoLineIsHalvedOnTheColumnsLines) {
-    TrimmedSurface face;
-    face.surface = surface;
-    TrimLoop loop;
-    auto add = [&](BSplineCurve2d pcurve) {
-        TrimCurve curve;
-        curve.pcurve = std::move(pcurve);
-        loop.curves.push_back(std::move(curve));
-    };
-    add(bulgingLine(0.004));
-    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
-                       {HomogeneousPoint2(1, 0, 1), HomogeneousPoint2(1, 1, 1)}));
-    add(top);
-    add(BSplineCurve2d(KnotVector(1, {0, 0, 1, 1}),
-                       {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(0, 0, 1)}));
-    face.loops.push_back(loop);
+    const TrimmedSurface face = faceWithBottom(bulgingLine(0.004));
     // the columns are known, the rows wait for the boundary's points
     const FaceKdTreeLines lines = kdTreeLinesBeforeDiscretisation(face);
     ASSERT_TRUE(lines.axes[0].has_value());
