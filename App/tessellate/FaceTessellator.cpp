@@ -670,9 +670,6 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             continue;
         }
         // one Bezier patch: bound the error of its piece over the cell (section 5.2)
-        const Point2 low = frame_->toParameter(r.x0, r.y0), high = frame_->toParameter(r.x1, r.y1);
-        const Point2 middle = 0.5 * (low + high);
-        const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
         if (node.parentPiece) {
             const Rect& p = node.parentRect;
             auto local = [](cInt x, cInt lo, cInt hi) { return double(x - lo) / double(hi - lo); };
@@ -681,6 +678,10 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                                              local(r.y0, p.y0, p.y1), local(r.y1, p.y0, p.y1)));
             childrenPiece = ownPiece;
         } else {
+            const Point2 low = frame_->toParameter(r.x0, r.y0);
+            const Point2 high = frame_->toParameter(r.x1, r.y1);
+            const Point2 middle = 0.5 * (low + high);
+            const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
             ownPiece = std::make_shared<const BezierPatch>(
                 patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y()));
             // not where the cell reaches past its span (a frame past the surface's domain): the

@@ -11,11 +11,6 @@ std::optional<std::array<KdTreeGrid, 2>> FaceKdTreeLines::both() const {
     return std::array<KdTreeGrid, 2>{*axes[0], *axes[1]};
 }
 
-FaceKdTreeLines FaceKdTreeLines::of(const std::array<KdTreeGrid, 2>& grids,
-                                    std::array<double, 2> extent) {
-    return {{grids[0], grids[1]}, extent};
-}
-
 FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
     constexpr double kMax = std::numeric_limits<double>::max();
     Point2 low{kMax, kMax}, high{-kMax, -kMax};

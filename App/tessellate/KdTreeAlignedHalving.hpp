@@ -26,7 +26,6 @@ struct FaceKdTreeLines {
 
     // both axes, as FaceTessellator's even columns need them
     std::optional<std::array<KdTreeGrid, 2>> both() const;
-    static FaceKdTreeLines of(const std::array<KdTreeGrid, 2>& grids, std::array<double, 2> extent);
 };
 FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face);
 

@@ -427,12 +427,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // iso-line), its lines still place the points of the curves that run along it (faceLines):
     // both long sides of bottle.brep's thread flanks then have their points on the flank's
     // columns, which cut their sides 347 times at relative 1e-4 instead of 731.
-    std::vector<std::optional<std::array<KdTreeGrid, 2>>> faceGrids(faceCount);
+    // The even columns below are set on these lines too, so that edges follow them.
     std::vector<FaceKdTreeLines> faceLines(faceCount);
     tbb::parallel_for(0, faceCount, [&](int f) {
-        if (!failure[f].empty()) return;
-        faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
-        faceGrids[f] = faceLines[f].both();
+        if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
     });
     // Even columns (evenColumnNeeds) where a face's region is its whole frame box and its
     // cells bound as filled to their sides (no free edge). An edge that runs along an axis of
@@ -443,8 +441,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // make one group (union-find over face * 2 + axis); its columns are chosen again where step
     // 1a or 1b changes a member's surface share.
     auto hasEvenColumns = [&](int f) {
-        return faceGrids[f] &&
-               ((*faceGrids[f])[0].hasEvenColumns() || (*faceGrids[f])[1].hasEvenColumns());
+        const auto& axes = faceLines[f].axes;
+        return (axes[0] && axes[0]->hasEvenColumns()) || (axes[1] && axes[1]->hasEvenColumns());
     };
     std::vector<int> columnGroup(2 * static_cast<size_t>(faceCount));
     std::vector<char> columnsRuledOut(2 * static_cast<size_t>(faceCount));
@@ -455,8 +453,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     };
     std::vector<char> columnCandidate(faceCount, 0);
     tbb::parallel_for(0, faceCount, [&](int f) {
-        columnCandidate[f] = options.evenColumns && failure[f].empty() && faceGrids[f] &&
-                             !hasFreeEdge(f) && regionIsTheBox(model.faces[f], *faceGrids[f]);
+        const auto grids = faceLines[f].both();
+        columnCandidate[f] = options.evenColumns && failure[f].empty() && grids &&
+                             !hasFreeEdge(f) && regionIsTheBox(model.faces[f], *grids);
     });
     for (int f = 0; f < faceCount; ++f)
         for (int axis = 0; axis < 2; ++axis) columnsRuledOut[2 * f + axis] = !columnCandidate[f];
@@ -483,13 +482,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                         if (!otherAlong[otherAxis]) continue;
                         const int otherNode = 2 * other.face + otherAxis;
                         // tied only where both run the edge on one frame at the same values
-                        bool same =
-                            columnCandidate[other.face] && (*faceGrids[use.face])[axis].sameFrame(
-                                                               (*faceGrids[other.face])[otherAxis]);
+                        bool same = columnCandidate[other.face] &&
+                                    faceLines[use.face].axes[axis]->sameFrame(
+                                        *faceLines[other.face].axes[otherAxis]);
                         for (const double t : {0.0, 0.5, 1.0})
                             same =
                                 same && std::abs(curve.uv(t)[axis] - otherCurve.uv(t)[otherAxis]) <=
-                                            1e-9 / (*faceGrids[use.face])[axis].scale() *
+                                            1e-9 / faceLines[use.face].axes[axis]->scale() *
                                                 double(kKdTreeFrameScale);
                         if (!same) {
                             columnsRuledOut[node] = columnsRuledOut[otherNode] = 1;
@@ -509,7 +508,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::set<int> faces;
         for (const int node : nodes) faces.insert(node / 2);
         auto setCounts = [&](const std::vector<int>& counts) {
-            for (const int node : nodes) (*faceGrids[node / 2])[node % 2].setEvenColumns(counts);
+            for (const int node : nodes) faceLines[node / 2].axes[node % 2]->setEvenColumns(counts);
         };
         setCounts({});
         if (std::any_of(nodes.begin(), nodes.end(),
@@ -519,12 +518,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
-                needs[k] = evenColumnNeeds(model.faces[f], *faceGrids[f], nodes[k] % 2,
+                needs[k] = evenColumnNeeds(model.faces[f], *faceLines[f].both(), nodes[k] % 2,
                                            faceBudgets[f].surface, options.mode,
                                            options.flatCellsByDistance);
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
-                needs[k].assign((*faceGrids[f])[nodes[k] % 2].intervals().size() - 1, 0);
+                needs[k].assign(faceLines[f].axes[nodes[k] % 2]->intervals().size() - 1, 0);
             }
         });
         std::vector<int> counts = needs.front();
@@ -559,17 +558,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (size_t k = 0; k < curves.size(); ++k)
             if (static_cast<int>(k) != curveUse[e]) order.push_back(k);
         for (const BentCurves rule : {BentCurves::narrowBand, BentCurves::onRuledSurface})
-            for (size_t k : order) {
-                const int f = uses[e][k].face;
-                // both axes with their even columns where known, else the axes that are
-                const FaceKdTreeLines lines =
-                    faceGrids[f] ? FaceKdTreeLines::of(*faceGrids[f], faceLines[f].extent)
-                                 : faceLines[f];
-                if (auto params =
-                        discretizeEdgeOnKdTreeLines(curves, k, &lines, edge.lineApproximation,
-                                                    edge.lineSimplification, &points, rule))
+            for (size_t k : order)
+                if (auto params = discretizeEdgeOnKdTreeLines(
+                        curves, k, &faceLines[uses[e][k].face], edge.lineApproximation,
+                        edge.lineSimplification, &points, rule))
                     return params;
-            }
         if (curveUse[e] < 0) return std::nullopt;
         return discretizeEdgeOnKdTreeLines(curves, curveUse[e], nullptr, edge.lineApproximation,
                                            edge.lineSimplification, &points);
@@ -1077,7 +1070,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             choices.splitThroughBoundaryPoints = options.splitThroughBoundaryPoints;
             choices.flatCellsByDistance = options.flatCellsByDistance;
             choices.filledCellsBySides = !hasFreeEdge(f);
-            if (hasEvenColumns(f)) choices.evenColumns = faceGrids[f];
+            if (hasEvenColumns(f)) choices.evenColumns = faceLines[f].both();
             tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f],
                                                                 options.mode, choices);
             crossings[f] = tessellators[f]->findCrossings(boundaryOf(f));
