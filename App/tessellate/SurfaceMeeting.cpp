@@ -12,7 +12,7 @@ SurfaceMeeting findSurfaceMeeting(const std::vector<const BSplineSurface*>& surf
                                   const Point3& start, const std::vector<Point2>& starts,
                                   int iterations) {
     const auto count = static_cast<Eigen::Index>(surfaces.size());
-    SurfaceMeeting best{start, starts, std::vector<Point3>(surfaces.size()), 0};
+    SurfaceMeeting best{start, starts, std::vector<Point3>(surfaces.size()), 0, 0};
     best.offset = std::numeric_limits<double>::infinity();
     Point3 point = start;
     std::vector<Point2> uv = starts;
@@ -32,7 +32,8 @@ SurfaceMeeting findSurfaceMeeting(const std::vector<const BSplineSurface*>& surf
             normals.row(s) = normal.transpose();
             heights(s) = normal.dot(foot.point - point);
         }
-        if (offset < best.offset) best = {point, uv, feet, offset};
+        if (offset < best.offset) best = {point, uv, feet, offset, 0};
+        best.iterations = iteration + 1;
         if (iteration == iterations || !(offset > 0)) break;
         // the shortest step onto every plane; normals less than about half a degree apart (the
         // pivoted QR's relative threshold 1e-2 ~ sin 0.57 deg) count as one direction, so that
@@ -41,7 +42,11 @@ SurfaceMeeting findSurfaceMeeting(const std::vector<const BSplineSurface*>& surf
         planes.setThreshold(1e-2);
         planes.compute(normals);
         const Eigen::Vector3d step = planes.solve(heights);
-        if (!step.allFinite()) break;
+        // A step within rounding of the point leaves it where it is: the surfaces have met, or
+        // the point sits midway between side-by-side surfaces (where the step is the same
+        // least-squares one every time). Further iterations would only repeat the feet: on
+        // trj7_b1-ec-214.stp most meetings stood still from their fifth iteration on.
+        if (!step.allFinite() || step.norm() <= 1e-12 * (1 + point.norm())) break;
         point += Vector3(step);
     }
     return best;

@@ -20,6 +20,7 @@ struct SurfaceMeeting {
     std::vector<Point2> uv;    // per surface, its foot's (u, v)
     std::vector<Point3> feet;  // per surface, its foot
     double offset = 0;         // the largest distance from the point to a foot
+    int iterations = 0;        // how many times the feet were found
 };
 
 // `starts` holds one (u, v) per surface to start its foot search from.

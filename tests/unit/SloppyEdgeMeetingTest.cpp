@@ -215,7 +215,7 @@ TEST(SloppyEdgeMeeting, FacesShareTheirCrossingFarFromTheirTrimmingCurves) {
 }
 
 // Surfaces whose normals are all but parallel do not make the step leap along them: it ends
-// midway between them.
+// midway between them, and stays there without spending the remaining iterations.
 TEST(SloppyEdgeMeeting, ParallelSurfacesMeetMidway) {
     auto plane = [](double height) {
         // a bilinear patch z = height over [0, 1]^2
@@ -231,6 +231,8 @@ TEST(SloppyEdgeMeeting, ParallelSurfacesMeetMidway) {
     EXPECT_NEAR(meeting.point.z(), 0.1, 1e-9);
     EXPECT_NEAR(meeting.offset, 0.1, 1e-9);
     EXPECT_NEAR(meeting.point.x(), 0.3, 1e-9);
+    // the feet from the start, then from midway; the step from there is zero
+    EXPECT_EQ(meeting.iterations, 2);
 }
 
 }  // namespace
