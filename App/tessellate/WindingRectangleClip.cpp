@@ -89,4 +89,33 @@ Paths clipKeepingWinding(const Paths& region, cInt x0, cInt y0, cInt x1, cInt y1
     return out;
 }
 
+std::optional<Path> clipSimpleRing(const Path& ring, cInt x0, cInt y0, cInt x1, cInt y1) {
+    const HalfPlane planes[4] = {{0, x0, true}, {0, x1, false}, {1, y0, true}, {1, y1, false}};
+    Path a = ring, b;
+    for (const HalfPlane& plane : planes) {
+        const std::size_t n = a.size();
+        int crossings = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            crossings += plane.inside(a[i]) != plane.inside(a[(i + 1) % n]);
+        if (crossings == 0) {
+            if (!plane.inside(a[0])) return Path{};
+            continue;  // wholly inside: kept as it is
+        }
+        if (crossings > 2) return std::nullopt;
+        // A point on the line between two inside points: the piece of the line that closes the
+        // ring could run through it, and the ring would touch itself there.
+        for (std::size_t i = 0; i < n; ++i)
+            if (plane.along(a[i]) == plane.bound && plane.inside(a[(i + n - 1) % n]) &&
+                plane.inside(a[(i + 1) % n]))
+                return std::nullopt;
+        clipAgainst(a, plane, b);
+        std::swap(a, b);
+        if (a.size() < 3) return Path{};
+    }
+    const double area = ClipperLib::Area(a);
+    if (area == 0) return Path{};
+    if (area < 0) std::reverse(a.begin(), a.end());
+    return a;
+}
+
 }  // namespace nurbslod

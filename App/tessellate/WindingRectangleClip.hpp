@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <polyclipping/clipper.hpp>
 
 namespace nurbslod {
@@ -17,5 +18,15 @@ namespace nurbslod {
 // the points instead of a sweep. Cut points are rounded to the nearest integer on the line.
 ClipperLib::Paths clipKeepingWinding(const ClipperLib::Paths& region, ClipperLib::cInt x0,
                                      ClipperLib::cInt y0, ClipperLib::cInt x1, ClipperLib::cInt y1);
+
+// The piece of one simple ring (a region of the clipper's: no edge crosses another) within an
+// axis-aligned rectangle, as one simple ring oriented counter-clockwise, or no points where the
+// ring leaves nothing with area inside. Clipped against each of the rectangle's half-planes in
+// turn (Sutherland and Hodgman), which gives a simple ring where the ring crosses that
+// half-plane's line no more than twice; none (std::nullopt) where it crosses more often, or
+// touches the line from inside, so the caller asks the full clipper.
+std::optional<ClipperLib::Path> clipSimpleRing(const ClipperLib::Path& ring, ClipperLib::cInt x0,
+                                               ClipperLib::cInt y0, ClipperLib::cInt x1,
+                                               ClipperLib::cInt y1);
 
 }  // namespace nurbslod

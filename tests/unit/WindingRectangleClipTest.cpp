@@ -173,3 +173,122 @@ TEST(WindingRectangleClip, RoundsCutPointsToTheNearestStep) {
     EXPECT_TRUE(low);
     EXPECT_TRUE(high);
 }
+
+namespace {
+
+// A random ring: points at increasing angles around a centre, at random distances, counter-
+// clockwise or clockwise. Simple but where two neighbours are more than a half turn apart.
+Path randomStar(std::mt19937& random) {
+    std::uniform_real_distribution<double> angle(0, 2 * M_PI), radius(50, 500);
+    std::uniform_int_distribution<int> count(3, 16), centre(300, 700), turn(0, 1);
+    std::vector<double> angles(count(random));
+    for (double& a : angles) a = angle(random);
+    std::sort(angles.begin(), angles.end());
+    const cInt cx = centre(random), cy = centre(random);
+    Path ring;
+    for (const double a : angles) {
+        const double r = radius(random);
+        const IntPoint p{cx + std::llround(r * std::cos(a)), cy + std::llround(r * std::sin(a))};
+        if (ring.empty() || !(ring.back() == p)) ring.push_back(p);
+    }
+    if (turn(random)) std::reverse(ring.begin(), ring.end());
+    return ring;
+}
+
+// Whether two segments that share no end point meet (touching counts).
+bool segmentsMeet(const IntPoint& a, const IntPoint& b, const IntPoint& c, const IntPoint& d) {
+    auto side = [](const IntPoint& p, const IntPoint& q, const IntPoint& r) {
+        const double cross =
+            double(q.X - p.X) * double(r.Y - p.Y) - double(q.Y - p.Y) * double(r.X - p.X);
+        return (cross > 0) - (cross < 0);
+    };
+    auto within = [](const IntPoint& p, const IntPoint& q, const IntPoint& r) {
+        return std::min(p.X, q.X) <= r.X && r.X <= std::max(p.X, q.X) &&
+               std::min(p.Y, q.Y) <= r.Y && r.Y <= std::max(p.Y, q.Y);
+    };
+    const int s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
+    if (s1 * s2 < 0 && s3 * s4 < 0) return true;
+    return (s1 == 0 && within(a, b, c)) || (s2 == 0 && within(a, b, d)) ||
+           (s3 == 0 && within(c, d, a)) || (s4 == 0 && within(c, d, b));
+}
+
+bool isSimple(const Path& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // neighbours share an end
+            if (segmentsMeet(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+// Where it answers, the one-pass clip of a simple ring covers what the full clipper's
+// intersection covers, as one simple counter-clockwise ring; it answers most random cases.
+TEST(WindingRectangleClip, ASimpleRingsPieceIsTheClippersAsOneSimpleRing) {
+    std::mt19937 random(11);
+    int answered = 0, refused = 0, empty = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const Path ring = randomStar(random);
+        const Box box = randomBox(random, 0, 1000);
+        if (!isSimple(ring)) continue;  // an angular gap over a half turn can fold it
+        const auto piece = clipSimpleRing(ring, box.x0, box.y0, box.x1, box.y1);
+        if (!piece) {
+            ++refused;
+            continue;
+        }
+        ++answered;
+        const Paths reference = clipperIntersection({ring}, box);
+        if (piece->empty()) {
+            ++empty;
+            EXPECT_EQ(areaOf(reference), 0) << "trial " << trial;
+            continue;
+        }
+        EXPECT_GT(ClipperLib::Area(*piece), 0) << "trial " << trial;
+        EXPECT_TRUE(isSimple(*piece)) << "trial " << trial;
+        for (const IntPoint& p : *piece) {
+            EXPECT_TRUE(box.x0 <= p.X && p.X <= box.x1 && box.y0 <= p.Y && p.Y <= box.y1);
+        }
+        // the same points covered, but within a step and a half of a cut (rounded either way)
+        std::uniform_real_distribution<double> x(box.x0, box.x1), y(box.y0, box.y1);
+        for (int sample = 0; sample < 50; ++sample) {
+            const double px = x(random), py = y(random);
+            if (distanceToSegments({*piece}, px, py) < 1.5 ||
+                distanceToSegments(reference, px, py) < 1.5)
+                continue;
+            EXPECT_EQ(windingNumber({*piece}, px, py) != 0, windingNumber(reference, px, py) != 0)
+                << "trial " << trial << " at " << px << ", " << py;
+        }
+    }
+    EXPECT_GT(answered, 2 * refused);
+    EXPECT_GT(answered - empty, 1000);
+}
+
+TEST(WindingRectangleClip, ASimpleRingThatCrossesALineFourTimesIsLeftToTheClipper) {
+    // a U whose two arms reach up through y = 50
+    const Path u{{0, 0}, {100, 0}, {100, 100}, {70, 100}, {70, 20}, {30, 20}, {30, 100}, {0, 100}};
+    EXPECT_FALSE(clipSimpleRing(u, -10, -10, 110, 50).has_value());
+    // the same U cut below its notch is one ring
+    const auto low = clipSimpleRing(u, -10, -10, 110, 10);
+    ASSERT_TRUE(low.has_value());
+    EXPECT_EQ(ClipperLib::Area(*low), 100.0 * 10);
+    // touching the line y = 20 from inside at the notch's floor: the closing piece of that line
+    // would run along the floor
+    const Path notch{{0, 0}, {100, 0}, {100, 40}, {60, 40}, {50, 20}, {40, 40}, {0, 40}};
+    EXPECT_FALSE(clipSimpleRing(notch, -10, 20, 110, 50).has_value());
+}
+
+TEST(WindingRectangleClip, ASimpleRingInsideOutsideOrAroundTheRectangle) {
+    const Path inside{{10, 10}, {20, 10}, {20, 20}};
+    EXPECT_EQ(clipSimpleRing(inside, 0, 0, 100, 100), inside);
+    EXPECT_EQ(clipSimpleRing(inside, 50, 50, 100, 100), Path{});
+    const Path around{{-10, -10}, {200, -10}, {200, 200}, {-10, 200}};
+    const auto box = clipSimpleRing(around, 0, 0, 100, 100);
+    ASSERT_TRUE(box.has_value());
+    EXPECT_EQ(box->size(), 4u);
+    EXPECT_EQ(ClipperLib::Area(*box), 100.0 * 100);
+    // clockwise in, counter-clockwise out
+    const Path clockwise(around.rbegin(), around.rend());
+    EXPECT_EQ(ClipperLib::Area(*clipSimpleRing(clockwise, 0, 0, 100, 100)), 100.0 * 100);
+}
