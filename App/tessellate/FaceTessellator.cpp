@@ -830,12 +830,19 @@ struct CornerLines {
 
 // The polygons with holes of a leaf: each entry is rings[0] = outer, rings[1..] = holes.
 std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
-                                  const CornerLines& lines) {
+                                  const CornerLines& lines, bool oneSimpleRing) {
     std::vector<Paths> out;
     if (full) {
         out.push_back({lines.withHangingPoints(r.path(), r)});
         return out;
     }
+    // one simple ring's piece in one pass, as the kd-tree's cells (clip above): the clipper
+    // was a seventh of bottle.brep's instructions here
+    if (oneSimpleRing && region.size() == 1)
+        if (const auto ring = clipSimpleRing(region[0], r.x0, r.y0, r.x1, r.y1)) {
+            if (!ring->empty()) out.push_back({lines.withHangingPoints(*ring, r)});
+            return out;
+        }
     ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(true);
     clipper.AddPaths(region, ClipperLib::ptSubject, true);
@@ -859,31 +866,58 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
 
 void FaceTessellator::forEachLeaf(
     const ClipperLib::Paths& region,
-    const std::function<void(const Leaf&, const Paths&)>& visit) const {
+    const std::function<void(const Leaf&, const Paths&, bool)>& visit) const {
     // The region cut down the tree node by node: each cut sees only its parent's piece, so the
     // whole walk costs about the boundary's size times the tree's depth. A leaf gets its
     // parent's piece, which its polygons are cut from (polygonsOfLeaf): cut here too, every
     // leaf was clipped twice.
+    // A region of one ring that does not touch itself (no point twice) stays one simple ring
+    // down the tree as long as each cut is clipSimpleRing's; the first cut that is not leaves
+    // paths that run back and forth along the cell's sides, and the leaves below it go to the
+    // clipper.
+    bool simpleRegion = region.size() == 1;
+    if (simpleRegion) {
+        Path sorted = region[0];
+        std::sort(sorted.begin(), sorted.end(), [](const IntPoint& a, const IntPoint& b) {
+            return a.X < b.X || (a.X == b.X && a.Y < b.Y);
+        });
+        simpleRegion = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+    }
     const Paths none;  // a full leaf's: its polygon is its rectangle
-    std::vector<std::pair<int, std::shared_ptr<const Paths>>> stack;
-    stack.push_back({0, std::make_shared<const Paths>(region)});
+    struct Entry {
+        int index;
+        std::shared_ptr<const Paths> parentRegion;
+        bool oneSimpleRing;
+    };
+    std::vector<Entry> stack;
+    stack.push_back({0, std::make_shared<const Paths>(region), simpleRegion});
     while (!stack.empty()) {
-        auto [index, parentRegion] = std::move(stack.back());
+        auto [index, parentRegion, oneSimpleRing] = std::move(stack.back());
         stack.pop_back();
         const Leaf& node = leaves_[index];
         if (node.leaf) {
-            visit(node, node.full ? none : *parentRegion);
+            visit(node, node.full ? none : *parentRegion, oneSimpleRing);
             continue;
         }
         Paths piece;
-        if (!node.full)
-            piece = clipKeepingWinding(*parentRegion, node.rect.x0, node.rect.y0, node.rect.x1,
-                                       node.rect.y1);
+        bool simplePiece = false;
+        if (!node.full) {
+            const Rect& r = node.rect;
+            std::optional<Path> ring;
+            if (oneSimpleRing && parentRegion->size() == 1)
+                ring = clipSimpleRing(parentRegion->front(), r.x0, r.y0, r.x1, r.y1);
+            if (ring) {
+                simplePiece = true;
+                if (!ring->empty()) piece.push_back(std::move(*ring));
+            } else {
+                piece = clipKeepingWinding(*parentRegion, r.x0, r.y0, r.x1, r.y1);
+            }
+        }
         if (node.children[0] >= 0) {
             // both children read the piece: shared, not copied
             auto shared = std::make_shared<const Paths>(std::move(piece));
-            stack.push_back({node.children[1], shared});
-            stack.push_back({node.children[0], std::move(shared)});
+            stack.push_back({node.children[1], shared, simplePiece});
+            stack.push_back({node.children[0], std::move(shared), simplePiece});
         }
     }
 }
@@ -940,9 +974,10 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
 
     std::vector<BoundaryCrossing> crossings;
     std::unordered_map<std::int64_t, bool> seen;
-    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
+    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
         if (leaf.full) return;
-        for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, false, lines))
+        for (const Paths& rings :
+             polygonsOfLeaf(leafRegion, leaf.rect, false, lines, oneSimpleRing))
             for (const Path& ring : rings)
                 for (const IntPoint& p : ring) {
                     const auto key = keyOf(p.X, p.Y);
@@ -1075,9 +1110,10 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
     std::vector<std::uint32_t> ids;
     std::vector<std::vector<IntegerPoint2>> integerRings;
-    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion) {
+    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
         ++mesh.cells;
-        for (const Paths& rings : polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines)) {
+        for (const Paths& rings :
+             polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines, oneSimpleRing)) {
             ids.clear();
             integerRings.resize(rings.size());
             for (std::size_t r = 0; r < rings.size(); ++r) {

@@ -71,8 +71,11 @@ private:
         const std::vector<BoundaryLoop>& loops) const;
     ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
     void buildKdTree(const ClipperLib::Paths& region);
-    void forEachLeaf(const ClipperLib::Paths& region,
-                     const std::function<void(const Leaf&, const ClipperLib::Paths&)>& visit) const;
+    // visit(leaf, piece, oneSimpleRing): the piece of the region that the leaf is cut from,
+    // and whether it is known to be one simple ring
+    void forEachLeaf(
+        const ClipperLib::Paths& region,
+        const std::function<void(const Leaf&, const ClipperLib::Paths&, bool)>& visit) const;
 
     const TrimmedSurface& face_;
     ErrorBudget budget_;
