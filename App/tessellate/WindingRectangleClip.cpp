@@ -39,6 +39,7 @@ struct HalfPlane {
 void clipAgainst(const Path& in, const HalfPlane& plane, Path& out) {
     out.clear();
     if (in.empty()) return;
+    out.reserve(in.size() + 2);
     auto push = [&](const IntPoint& p) {
         if (out.empty() || !(out.back() == p)) out.push_back(p);
     };
@@ -90,32 +91,51 @@ Paths clipKeepingWinding(const Paths& region, cInt x0, cInt y0, cInt x1, cInt y1
 }
 
 std::optional<Path> clipSimpleRing(const Path& ring, cInt x0, cInt y0, cInt x1, cInt y1) {
+    if (ring.size() < 3) return Path{};
+    cInt lowX = ring[0].X, highX = lowX, lowY = ring[0].Y, highY = lowY;
+    for (const IntPoint& p : ring) {
+        lowX = std::min(lowX, p.X), highX = std::max(highX, p.X);
+        lowY = std::min(lowY, p.Y), highY = std::max(highY, p.Y);
+    }
+    if (highX < x0 || lowX > x1 || highY < y0 || lowY > y1) return Path{};
+    // a half-plane that holds the ring's box holds every piece of it: no pass
+    const bool holdsBox[4] = {lowX >= x0, highX <= x1, lowY >= y0, highY <= y1};
     const HalfPlane planes[4] = {{0, x0, true}, {0, x1, false}, {1, y0, true}, {1, y1, false}};
-    Path a = ring, b;
-    for (const HalfPlane& plane : planes) {
-        const std::size_t n = a.size();
+    Path a, b;
+    const Path* current = &ring;
+    for (int k = 0; k < 4; ++k) {
+        if (holdsBox[k]) continue;
+        const HalfPlane& plane = planes[k];
+        const Path& in = *current;
+        const std::size_t n = in.size();
         int crossings = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            crossings += plane.inside(a[i]) != plane.inside(a[(i + 1) % n]);
+        bool previousInside = plane.inside(in[n - 1]);
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool inside = plane.inside(in[i]);
+            crossings += inside != previousInside;
+            previousInside = inside;
+        }
         if (crossings == 0) {
-            if (!plane.inside(a[0])) return Path{};
+            if (!plane.inside(in[0])) return Path{};
             continue;  // wholly inside: kept as it is
         }
         if (crossings > 2) return std::nullopt;
         // A point on the line between two inside points: the piece of the line that closes the
         // ring could run through it, and the ring would touch itself there.
         for (std::size_t i = 0; i < n; ++i)
-            if (plane.along(a[i]) == plane.bound && plane.inside(a[(i + n - 1) % n]) &&
-                plane.inside(a[(i + 1) % n]))
+            if (plane.along(in[i]) == plane.bound && plane.inside(in[i == 0 ? n - 1 : i - 1]) &&
+                plane.inside(in[i + 1 == n ? 0 : i + 1]))
                 return std::nullopt;
-        clipAgainst(a, plane, b);
+        clipAgainst(in, plane, b);
         std::swap(a, b);
+        current = &a;
         if (a.size() < 3) return Path{};
     }
-    const double area = ClipperLib::Area(a);
+    const double area = ClipperLib::Area(*current);
     if (area == 0) return Path{};
-    if (area < 0) std::reverse(a.begin(), a.end());
-    return a;
+    Path out = *current;
+    if (area < 0) std::reverse(out.begin(), out.end());
+    return out;
 }
 
 }  // namespace nurbslod
