@@ -21,17 +21,27 @@ namespace {
 BezierPatch differencePatch(const BezierPatch& patch, const Point3 (&corner)[2][2]) {
     const int m = patch.degreeU(), n = patch.degreeV();
     BezierPatch difference(m + 1, n + 1);
+    // the elevation's factors, each quotient taken once per cell instead of once per term
+    double alpha[2][kMaxDegree + 2], beta[2][kMaxDegree + 2];
+    for (int I = 0; I <= m + 1; ++I) {
+        alpha[0][I] = (m + 1.0 - I) / (m + 1.0);
+        alpha[1][I] = I / (m + 1.0);
+    }
+    for (int J = 0; J <= n + 1; ++J) {
+        beta[0][J] = (n + 1.0 - J) / (n + 1.0);
+        beta[1][J] = J / (n + 1.0);
+    }
     for (int I = 0; I <= m + 1; ++I)
         for (int J = 0; J <= n + 1; ++J) {
             HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
             for (int k = 0; k <= 1; ++k) {
                 const int i = I - k;
                 if (i < 0 || i > m) continue;
-                const double a = k == 0 ? (m + 1.0 - I) / (m + 1.0) : I / (m + 1.0);
+                const double a = alpha[k][I];
                 for (int l = 0; l <= 1; ++l) {
                     const int j = J - l;
                     if (j < 0 || j > n) continue;
-                    const double b = l == 0 ? (n + 1.0 - J) / (n + 1.0) : J / (n + 1.0);
+                    const double b = beta[l][J];
                     const HomogeneousPoint3& p = patch.pole(i, j);
                     sum.head<3>() += a * b * (p.head<3>() - p[3] * corner[k][l]);
                     sum[3] += a * b * p[3];
