@@ -24,6 +24,7 @@
 #include "tessellate/EvenColumns.hpp"
 #include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
+#include "tessellate/FoldedPairs.hpp"
 #include "tessellate/KdTreeAlignedHalving.hpp"
 #include "tessellate/NeedleSplit.hpp"
 #include "tessellate/PointWeld.hpp"
@@ -1279,6 +1280,35 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             mesh.triangleFaces[t] = facesBefore[origins[t].triangle];
         }
+    }
+    // folds without area, a pair of triangles each way round on three points of a chord
+    // (FoldedPairs)
+    const std::vector<char> kept = trianglesOutsideFolds(mesh.triangles, mesh.positions);
+    if (std::find(kept.begin(), kept.end(), 0) != kept.end()) {
+        std::size_t keptCount = 0;
+        for (std::size_t t = 0; t < kept.size(); ++t) {
+            if (!kept[t]) continue;
+            mesh.triangles[keptCount] = mesh.triangles[t];
+            mesh.triangleNormals[keptCount] = mesh.triangleNormals[t];
+            mesh.triangleFaces[keptCount] = mesh.triangleFaces[t];
+            ++keptCount;
+        }
+        mesh.triangles.resize(keptCount);
+        mesh.triangleNormals.resize(keptCount);
+        mesh.triangleFaces.resize(keptCount);
+        // the fold's points on the chord that no other triangle uses go with it
+        std::vector<std::uint32_t> newIndex(mesh.positions.size(), 0);
+        for (const auto& t : mesh.triangles)
+            for (auto i : t) newIndex[i] = 1;
+        std::uint32_t next = 0;
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            if (!newIndex[i]) continue;
+            mesh.positions[next] = mesh.positions[i];
+            newIndex[i] = next++;
+        }
+        mesh.positions.resize(next);
+        for (auto& t : mesh.triangles)
+            for (auto& i : t) i = newIndex[i];
     }
 
     result.seconds =
