@@ -56,11 +56,16 @@ ClipperLib::Clipper& threadClipper() {
 // 18,000 instructions on each, 17% of that model's at relative 1e-4. The piece is the same point
 // set; it keeps a boundary point where the ring runs along the cell's side, which the clipper
 // keeps or drops depending on the direction it runs (no guaranteed mesh of the corpus changed
-// but for 2 triangles of one trj7 face at 1e-4).
-Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear) {
-    if (preserveCollinear && subject.size() == 1)
-        if (auto ring = clipSimpleRing(subject[0], r.x0, r.y0, r.x1, r.y1))
+// but for 2 triangles of one trj7 face at 1e-4). Only for a subject known to be one simple ring
+// (oneSimpleRing); `simpleOut`, where given, tells whether the piece is one too.
+Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear, bool oneSimpleRing,
+           bool* simpleOut = nullptr) {
+    if (simpleOut) *simpleOut = false;
+    if (preserveCollinear && oneSimpleRing && subject.size() == 1)
+        if (auto ring = clipSimpleRing(subject[0], r.x0, r.y0, r.x1, r.y1)) {
+            if (simpleOut) *simpleOut = true;
             return ring->empty() ? Paths{} : Paths{std::move(*ring)};
+        }
     ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(preserveCollinear);
     clipper.AddPaths(subject, ClipperLib::ptSubject, true);
@@ -71,10 +76,21 @@ Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear) {
     return out;
 }
 
+// A region of one ring that visits no point twice: the clipper's union makes its rings simple
+// but may let one touch itself at a point, which clipSimpleRing is not for.
+bool isOneRingWithoutTouch(const Paths& region) {
+    if (region.size() != 1) return false;
+    Path sorted = region[0];
+    std::sort(sorted.begin(), sorted.end(), [](const IntPoint& a, const IntPoint& b) {
+        return a.X < b.X || (a.X == b.X && a.Y < b.Y);
+    });
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
 // The region covers the rectangle grown by one step: no boundary point can lie on the cell.
 bool coversWithMargin(const Paths& region, const Rect& r) {
     const Rect grown{r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1};
-    const Paths inside = clip(region, grown, false);
+    const Paths inside = clip(region, grown, false, false);
     if (inside.size() != 1 || inside[0].size() != 4) return false;
     for (const IntPoint& p : inside[0])
         if ((p.X != grown.x0 && p.X != grown.x1) || (p.Y != grown.y0 && p.Y != grown.y1))
@@ -84,8 +100,8 @@ bool coversWithMargin(const Paths& region, const Rect& r) {
 
 // The region's piece of a cell is the whole cell: one path through its four corners with every
 // point on its sides (the boundary runs along them, or beyond them by up to the margin).
-bool isWholeCell(const Paths& piece, const Rect& r) {
-    const Paths inside = clip(piece, r, true);
+bool isWholeCell(const Paths& piece, const Rect& r, bool oneSimpleRing) {
+    const Paths inside = clip(piece, r, true, oneSimpleRing);
     if (inside.size() != 1) return false;
     int corners = 0;
     for (const IntPoint& p : inside[0]) {
@@ -108,8 +124,9 @@ bool isWholeCell(const Paths& piece, const Rect& r) {
 // them). A point that the second pass adds on a segment (a cut of another face's cell side)
 // moves onto the line between its ends' moved points, on their side, no farther than they do;
 // two units are added for the rounding of such points to the frame's integers.
-std::optional<std::array<double, 2>> nearSideOffsets(const Paths& piece, const Rect& r) {
-    Paths inside = clip(piece, r, true);
+std::optional<std::array<double, 2>> nearSideOffsets(const Paths& piece, const Rect& r,
+                                                     bool oneSimpleRing) {
+    Paths inside = clip(piece, r, true, oneSimpleRing);
     if (inside.size() != 1 || inside[0].size() < 3) return std::nullopt;
     Path& ring = inside[0];
     const double area = ClipperLib::Area(ring);
@@ -570,10 +587,18 @@ void FaceTessellator::buildKdTree(const Paths& region) {
         // to the cell took four (BezierPatchGrid::piece, 9% of trj7_b1-ec-214.stp's time).
         std::shared_ptr<const BezierPatch> parentPiece = nullptr;
         Rect parentRect{};
+        bool simpleRing = false;  // the region's piece is known to be one simple ring
     };
     std::vector<Node> stack;
     leaves_.push_back({{0, 0, kScale, kScale}});
-    stack.push_back({{0, 0, kScale, kScale}, false, std::make_shared<const Paths>(region), 0, 0});
+    stack.push_back({{0, 0, kScale, kScale},
+                     false,
+                     std::make_shared<const Paths>(region),
+                     0,
+                     0,
+                     nullptr,
+                     Rect{},
+                     isOneRingWithoutTouch(region)});
     // A region that is a rectangle answers every cell's questions without clipping: the cells
     // along its sides were clipped twice at every depth, a seventh of bottle.brep's time. The
     // answers are those of the clips; a cell's piece is not needed either, as the boundary
@@ -614,7 +639,8 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                 covered = where == RectangleInRegion::Inside;
             }
             if (!covered && !rectangle) {
-                Paths piece = clip(*node.region, grown, true);
+                bool simplePiece = false;
+                Paths piece = clip(*node.region, grown, true, node.simpleRing, &simplePiece);
                 // A piece with less area than the grown cell does not cover it; only one with
                 // (about) all of it needs the exact test (the rounding of doubles at 2^60).
                 double area = 0;
@@ -631,9 +657,11 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                     if (!any) continue;  // outside the trimmed region: neither leaf nor parent
                     const double cellArea = double(r.x1 - r.x0) * double(r.y1 - r.y0);
                     sidesOnly = choices_.filledCellsBySides &&
-                                std::abs(area) >= (1 - 1e-9) * cellArea && isWholeCell(piece, r);
+                                std::abs(area) >= (1 - 1e-9) * cellArea &&
+                                isWholeCell(piece, r, simplePiece);
                     pieceFraction = fractionOfCell(boundsOf(piece), r);
                     node.region = std::make_shared<const Paths>(std::move(piece));
+                    node.simpleRing = simplePiece;
                 }
             }
             if (covered) {
@@ -656,8 +684,10 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             leaves_.push_back({b});
             leaves_[node.index].children[0] = ia;
             leaves_[node.index].children[1] = ia + 1;
-            stack.push_back({b, node.full, node.region, node.depth + 1, ia + 1, childrenPiece, r});
-            stack.push_back({a, node.full, node.region, node.depth + 1, ia, childrenPiece, r});
+            stack.push_back({b, node.full, node.region, node.depth + 1, ia + 1, childrenPiece, r,
+                             node.simpleRing});
+            stack.push_back(
+                {a, node.full, node.region, node.depth + 1, ia, childrenPiece, r, node.simpleRing});
         };
         // first cut at Bezier span borders, nearest the middle, in the direction with more
         auto inside = [](const std::vector<cInt>& breaks, cInt lo, cInt hi) {
@@ -723,7 +753,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
             // bound for corners on their sides: the bound for corners near them
             if (trimmedCell && mode_ == ErrorMode::Guaranteed && choices_.filledCellsBySides &&
                 pieceFraction > 0.5)
-                if (const auto near = nearSideOffsets(*node.region, r)) {
+                if (const auto near = nearSideOffsets(*node.region, r, node.simpleRing)) {
                     // the bound for corners on the sides, measured for them (not the trimmed
                     // cell's plain sum)
                     const CellErrorBound sides =
@@ -875,14 +905,7 @@ void FaceTessellator::forEachLeaf(
     // down the tree as long as each cut is clipSimpleRing's; the first cut that is not leaves
     // paths that run back and forth along the cell's sides, and the leaves below it go to the
     // clipper.
-    bool simpleRegion = region.size() == 1;
-    if (simpleRegion) {
-        Path sorted = region[0];
-        std::sort(sorted.begin(), sorted.end(), [](const IntPoint& a, const IntPoint& b) {
-            return a.X < b.X || (a.X == b.X && a.Y < b.Y);
-        });
-        simpleRegion = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-    }
+    const bool simpleRegion = isOneRingWithoutTouch(region);
     const Paths none;  // a full leaf's: its polygon is its rectangle
     struct Entry {
         int index;
