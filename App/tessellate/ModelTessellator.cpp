@@ -1249,19 +1249,26 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     WeldedPoints welded = weldPoints(mesh.positions, used, 1e-2 * options.tolerance);
     const std::vector<std::uint32_t>& remap = welded.remap;
     mesh.positions = std::move(welded.kept);
-    std::size_t out = 0;
-    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        auto tri = mesh.triangles[t];
-        for (auto& i : tri) i = remap[i];
-        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-        mesh.triangles[out] = tri;
-        mesh.triangleNormals[out] = mesh.triangleNormals[t];
-        mesh.triangleFaces[out] = mesh.triangleFaces[t];
-        ++out;
-    }
-    mesh.triangles.resize(out);
-    mesh.triangleNormals.resize(out);
-    mesh.triangleFaces.resize(out);
+    // Keeps the triangles that keep(t, corners) takes, in order, with their normals and faces;
+    // keep may renumber the corners.
+    auto keepTriangles = [&mesh](auto keep) {
+        std::size_t out = 0;
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            auto corners = mesh.triangles[t];
+            if (!keep(t, corners)) continue;
+            mesh.triangles[out] = corners;
+            mesh.triangleNormals[out] = mesh.triangleNormals[t];
+            mesh.triangleFaces[out] = mesh.triangleFaces[t];
+            ++out;
+        }
+        mesh.triangles.resize(out);
+        mesh.triangleNormals.resize(out);
+        mesh.triangleFaces.resize(out);
+    };
+    keepTriangles([&](std::size_t, std::array<std::uint32_t, 3>& corners) {
+        for (auto& i : corners) i = remap[i];
+        return corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2];
+    });
     // A face's own point that the weld moved onto a point of another face's chord (a thin band
     // of a trimmed cell along its boundary, 1e-6 of a millimetre wide on bottle.brep's thread)
     // leaves a needle there: its triangle across that chord is split at the point instead.
@@ -1285,17 +1292,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // (FoldedPairs)
     const std::vector<char> kept = trianglesOutsideFolds(mesh.triangles, mesh.positions);
     if (std::find(kept.begin(), kept.end(), 0) != kept.end()) {
-        std::size_t keptCount = 0;
-        for (std::size_t t = 0; t < kept.size(); ++t) {
-            if (!kept[t]) continue;
-            mesh.triangles[keptCount] = mesh.triangles[t];
-            mesh.triangleNormals[keptCount] = mesh.triangleNormals[t];
-            mesh.triangleFaces[keptCount] = mesh.triangleFaces[t];
-            ++keptCount;
-        }
-        mesh.triangles.resize(keptCount);
-        mesh.triangleNormals.resize(keptCount);
-        mesh.triangleFaces.resize(keptCount);
+        keepTriangles([&](std::size_t t, std::array<std::uint32_t, 3>&) { return kept[t] != 0; });
         // the fold's points on the chord that no other triangle uses go with it
         std::vector<std::uint32_t> newIndex(mesh.positions.size(), 0);
         for (const auto& t : mesh.triangles)

@@ -3,12 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
-#include "occ/ModelImporter.hpp"
-#include "occ/ShapeReader.hpp"
+#include "CorpusMesh.hpp"
+#include "TrianglesWithoutArea.hpp"
 #include "tessellate/FoldedPairs.hpp"
-#include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
 namespace {
@@ -48,26 +46,14 @@ TEST(FoldedPairs, AFlapWithAreaALoneSliverAndAnUnpairedCopyStay) {
 // their shared chord 0.0006 and 0.002 mm from its ends (4 triangles without area); none is
 // left, as the verifier counts them (1e-12 of the largest area).
 TEST(FoldedPairs, Trj7HasNoTriangleWithoutAreaAtRelative1e4) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "trj7_b1-ec-214.stp";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const Model model = occ::importModel(occ::readShape(path.string()));
-    TessellationOptions options;
-    options.tolerance = 1e-4 * model.boundingBoxDiagonal;
-    const TessellationResult result = tessellateModel(model, options);
-    ASSERT_TRUE(result.failures.empty());
-    const Mesh& mesh = result.mesh;
+    const auto result = test::tessellatedCorpusModel("trj7_b1-ec-214.stp", 1e-4);
+    if (!result) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    ASSERT_TRUE(result->failures.empty());
+    const Mesh& mesh = result->mesh;
     ASSERT_EQ(mesh.triangleFaces.size(), mesh.triangles.size());
-    double largest = 0;
-    std::vector<double> areas;
-    for (const auto& t : mesh.triangles) {
+    for (const auto& t : mesh.triangles)
         for (const auto i : t) ASSERT_LT(i, mesh.positions.size());
-        const Point3& p = mesh.positions[t[0]];
-        areas.push_back((mesh.positions[t[1]] - p).cross(mesh.positions[t[2]] - p).norm());
-        largest = std::max(largest, areas.back());
-    }
-    EXPECT_EQ(std::count_if(areas.begin(), areas.end(),
-                            [&](double area) { return area <= 1e-12 * largest; }),
-              0);
+    EXPECT_EQ(test::trianglesWithoutArea(mesh), 0u);
 }
 
 }  // namespace

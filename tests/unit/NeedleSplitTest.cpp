@@ -4,12 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <map>
 #include <utility>
 
-#include "occ/ModelImporter.hpp"
-#include "occ/ShapeReader.hpp"
+#include "CorpusMesh.hpp"
+#include "TrianglesWithoutArea.hpp"
 #include "tessellate/ModelTessellator.hpp"
 #include "tessellate/NeedleSplit.hpp"
 
@@ -85,26 +84,13 @@ TEST(NeedleSplit, NeedleOnTheBorderStays) {
 // and the weld made 216 needles of them. None is left, and none of the mesh's triangles has a
 // vanishing area as the verifier counts it (1e-12 of the largest).
 TEST(NeedleSplit, WeldedBottleHasNoTriangleWithoutArea) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "bottle.brep";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const Model model = occ::importModel(occ::readShape(path.string()));
-    TessellationOptions options;
-    options.tolerance = 1e-4 * model.boundingBoxDiagonal;
-    const TessellationResult result = tessellateModel(model, options);
-    ASSERT_TRUE(result.failures.empty());
-    const Mesh& mesh = result.mesh;
+    const auto result = test::tessellatedCorpusModel("bottle.brep", 1e-4);
+    if (!result) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    ASSERT_TRUE(result->failures.empty());
+    const Mesh& mesh = result->mesh;
     ASSERT_EQ(mesh.triangleNormals.size(), mesh.triangles.size());
     ASSERT_EQ(mesh.triangleFaces.size(), mesh.triangles.size());
-    double largest = 0;
-    std::vector<double> areas;
-    for (const auto& t : mesh.triangles) {
-        const Point3& p = mesh.positions[t[0]];
-        areas.push_back((mesh.positions[t[1]] - p).cross(mesh.positions[t[2]] - p).norm());
-        largest = std::max(largest, areas.back());
-    }
-    EXPECT_EQ(std::count_if(areas.begin(), areas.end(),
-                            [&](double area) { return area <= 1e-12 * largest; }),
-              0);
+    EXPECT_EQ(test::trianglesWithoutArea(mesh), 0u);
     for (const auto& normals : mesh.triangleNormals)
         for (const auto n : normals) EXPECT_LT(n, mesh.normals.size());
 }
