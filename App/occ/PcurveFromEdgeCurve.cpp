@@ -190,9 +190,10 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         // the interpolant against the projections between its samples
         double worst = 0;
         std::vector<double> refined{parameters.front()};
+        const Geom2dAdaptor_Curve fittedCurve(result);  // evaluates through its span cache
         for (int k = 0; k + 1 < count; ++k) {
             const double t = 0.5 * (parameters[k] + parameters[k + 1]);
-            const gp_Pnt2d fitted = result->Value(t), projected = sampleAt(t);
+            const gp_Pnt2d fitted = fittedCurve.Value(t), projected = sampleAt(t);
             const double miss = adaptor.Value(fitted.X(), fitted.Y())
                                     .Distance(adaptor.Value(projected.X(), projected.Y()));
             worst = std::max(worst, miss);
