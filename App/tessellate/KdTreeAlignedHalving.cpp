@@ -43,11 +43,6 @@ FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
     return lines;
 }
 
-std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
-    const TrimmedSurface& face) {
-    return kdTreeLinesBeforeDiscretisation(face).both();
-}
-
 int axisAlong(const CurveOnSurface& curve, const std::array<double, 2>& faceExtent,
               BentCurves rule) {
     const auto& poles = curve.pcurve().poles();

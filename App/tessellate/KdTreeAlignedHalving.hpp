@@ -29,10 +29,6 @@ struct FaceKdTreeLines {
 };
 FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face);
 
-// Both axes' lines where both are known.
-std::optional<std::array<KdTreeGrid, 2>> kdTreeGridsBeforeDiscretisation(
-    const TrimmedSurface& face);
-
 // Which curves that are not straight in (u, v) take a face's lines along an axis they run one
 // way along (their control points in order: by variation diminishing no line across meets
 // them twice):

@@ -155,14 +155,14 @@ TEST_F(QuarterCylinder, UnevenSpansPutTheBorderAmongThePoints) {
 
 TEST_F(QuarterCylinder, GridsAreKnownWhereEveryCurveStaysInTheEndsBox) {
     TrimmedSurface face = faceWithBottom(bottom);
-    const auto grids = kdTreeGridsBeforeDiscretisation(face);
+    const auto grids = kdTreeLinesBeforeDiscretisation(face).both();
     ASSERT_TRUE(grids.has_value());
     EXPECT_EQ((*grids)[0].lineWithin(0, 1).value(), 0.5);
     // a left side that bulges past u = 0: the frame waits for the boundary's points
     face.loops[0].curves[3].pcurve = BSplineCurve2d(
         KnotVector(2, {0, 0, 0, 1, 1, 1}),
         {HomogeneousPoint2(0, 1, 1), HomogeneousPoint2(-0.2, 0.5, 1), HomogeneousPoint2(0, 0, 1)});
-    EXPECT_FALSE(kdTreeGridsBeforeDiscretisation(face).has_value());
+    EXPECT_FALSE(kdTreeLinesBeforeDiscretisation(face).both().has_value());
 }
 
 // A bottom side that bulges a hair below v = 0 (a sloppy band's side off its iso-line): a
