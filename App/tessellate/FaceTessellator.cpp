@@ -56,15 +56,27 @@ ClipperLib::Clipper& threadClipper() {
 // 18,000 instructions on each, 17% of that model's at relative 1e-4. The piece is the same point
 // set; it keeps a boundary point where the ring runs along the cell's side, which the clipper
 // keeps or drops depending on the direction it runs (no guaranteed mesh of the corpus changed
-// but for 2 triangles of one trj7 face at 1e-4). Only for a subject known to be one simple ring
-// (oneSimpleRing); `simpleOut`, where given, tells whether the piece is one too.
+// but for 2 triangles of one trj7 face at 1e-4). Only for a region known to be one simple ring
+// (oneSimpleRing); the piece, one simple ring or none, is then one too. None (std::nullopt)
+// where the region is not such a ring or clipSimpleRing leaves it to the clipper.
+std::optional<Paths> simpleRingPiece(const Paths& region, bool oneSimpleRing, const Rect& r) {
+    if (!oneSimpleRing || region.size() != 1) return std::nullopt;
+    auto ring = clipSimpleRing(region[0], r.x0, r.y0, r.x1, r.y1);
+    if (!ring) return std::nullopt;
+    Paths piece;  // moved in: a braced list would copy the ring
+    if (!ring->empty()) piece.push_back(std::move(*ring));
+    return piece;
+}
+
+// The region's piece of r: simpleRingPiece where it answers (a piece that keeps collinear
+// points), else the clipper's; `simpleOut`, where given, tells whether it was the former.
 Paths clip(const Paths& subject, const Rect& r, bool preserveCollinear, bool oneSimpleRing,
            bool* simpleOut = nullptr) {
     if (simpleOut) *simpleOut = false;
-    if (preserveCollinear && oneSimpleRing && subject.size() == 1)
-        if (auto ring = clipSimpleRing(subject[0], r.x0, r.y0, r.x1, r.y1)) {
+    if (preserveCollinear)
+        if (auto piece = simpleRingPiece(subject, oneSimpleRing, r)) {
             if (simpleOut) *simpleOut = true;
-            return ring->empty() ? Paths{} : Paths{std::move(*ring)};
+            return std::move(*piece);
         }
     ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(preserveCollinear);
@@ -573,7 +585,7 @@ Paths FaceTessellator::regionOf(const std::vector<BoundaryLoop>& loops) const {
     return region;
 }
 
-void FaceTessellator::buildKdTree(const Paths& region) {
+void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
     leaves_.clear();
     struct Node {
         Rect rect;
@@ -598,7 +610,7 @@ void FaceTessellator::buildKdTree(const Paths& region) {
                      0,
                      nullptr,
                      Rect{},
-                     isOneRingWithoutTouch(region)});
+                     oneSimpleRing});
     // A region that is a rectangle answers every cell's questions without clipping: the cells
     // along its sides were clipped twice at every depth, a seventh of bottle.brep's time. The
     // answers are those of the clips; a cell's piece is not needed either, as the boundary
@@ -868,11 +880,10 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
     }
     // one simple ring's piece in one pass, as the kd-tree's cells (clip above): the clipper
     // was a seventh of bottle.brep's instructions here
-    if (oneSimpleRing && region.size() == 1)
-        if (const auto ring = clipSimpleRing(region[0], r.x0, r.y0, r.x1, r.y1)) {
-            if (!ring->empty()) out.push_back({lines.withHangingPoints(*ring, r)});
-            return out;
-        }
+    if (const auto piece = simpleRingPiece(region, oneSimpleRing, r)) {
+        if (!piece->empty()) out.push_back({lines.withHangingPoints(piece->front(), r)});
+        return out;
+    }
     ClipperLib::Clipper& clipper = threadClipper();
     clipper.PreserveCollinear(true);
     clipper.AddPaths(region, ClipperLib::ptSubject, true);
@@ -895,17 +906,15 @@ std::vector<Paths> polygonsOfLeaf(const Paths& region, const Rect& r, bool full,
 }  // namespace
 
 void FaceTessellator::forEachLeaf(
-    const ClipperLib::Paths& region,
+    const ClipperLib::Paths& region, bool oneSimpleRing,
     const std::function<void(const Leaf&, const Paths&, bool)>& visit) const {
     // The region cut down the tree node by node: each cut sees only its parent's piece, so the
     // whole walk costs about the boundary's size times the tree's depth. A leaf gets its
     // parent's piece, which its polygons are cut from (polygonsOfLeaf): cut here too, every
     // leaf was clipped twice.
-    // A region of one ring that does not touch itself (no point twice) stays one simple ring
-    // down the tree as long as each cut is clipSimpleRing's; the first cut that is not leaves
-    // paths that run back and forth along the cell's sides, and the leaves below it go to the
-    // clipper.
-    const bool simpleRegion = isOneRingWithoutTouch(region);
+    // A region of one simple ring (oneSimpleRing) stays one down the tree as long as each cut
+    // is clipSimpleRing's; the first cut that is not leaves paths that run back and forth along
+    // the cell's sides, and the leaves below it go to the clipper.
     const Paths none;  // a full leaf's: its polygon is its rectangle
     struct Entry {
         int index;
@@ -913,25 +922,22 @@ void FaceTessellator::forEachLeaf(
         bool oneSimpleRing;
     };
     std::vector<Entry> stack;
-    stack.push_back({0, std::make_shared<const Paths>(region), simpleRegion});
+    stack.push_back({0, std::make_shared<const Paths>(region), oneSimpleRing});
     while (!stack.empty()) {
-        auto [index, parentRegion, oneSimpleRing] = std::move(stack.back());
+        auto [index, parentRegion, parentSimple] = std::move(stack.back());
         stack.pop_back();
         const Leaf& node = leaves_[index];
         if (node.leaf) {
-            visit(node, node.full ? none : *parentRegion, oneSimpleRing);
+            visit(node, node.full ? none : *parentRegion, parentSimple);
             continue;
         }
         Paths piece;
         bool simplePiece = false;
         if (!node.full) {
             const Rect& r = node.rect;
-            std::optional<Path> ring;
-            if (oneSimpleRing && parentRegion->size() == 1)
-                ring = clipSimpleRing(parentRegion->front(), r.x0, r.y0, r.x1, r.y1);
-            if (ring) {
+            if (auto simple = simpleRingPiece(*parentRegion, parentSimple, r)) {
                 simplePiece = true;
-                if (!ring->empty()) piece.push_back(std::move(*ring));
+                piece = std::move(*simple);
             } else {
                 piece = clipKeepingWinding(*parentRegion, r.x0, r.y0, r.x1, r.y1);
             }
@@ -986,7 +992,8 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     double area = 0;
     for (const auto& p : region) area += ClipperLib::Area(p);
     if (!(std::abs(area) > 0)) throw FaceWithoutArea("the trimming loops enclose no area");
-    buildKdTree(region);
+    const bool simpleRegion = isOneRingWithoutTouch(region);
+    buildKdTree(region, simpleRegion);
 
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)
@@ -997,25 +1004,26 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
 
     std::vector<BoundaryCrossing> crossings;
     std::unordered_map<std::int64_t, bool> seen;
-    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
-        if (leaf.full) return;
-        for (const Paths& rings :
-             polygonsOfLeaf(leafRegion, leaf.rect, false, lines, oneSimpleRing))
-            for (const Path& ring : rings)
-                for (const IntPoint& p : ring) {
-                    const auto key = keyOf(p.X, p.Y);
-                    if (index.corners.count(key) || seen.count(key)) continue;
-                    seen[key] = true;
-                    auto [segment, t] = index.segmentAt(p, 1.5);
-                    if (segment < 0) continue;  // a surface point inside the region
-                    const auto& s = index.segments[segment];
-                    const BoundarySegmentOrigin& origin = loops[s.loop].origins[s.index];
-                    if (origin.edge < 0) continue;
-                    // t runs along the loop; the edge may run the other way
-                    crossings.push_back({origin.edge, origin.segment, origin.use,
-                                         origin.forward ? t : 1 - t, p.X, p.Y});
-                }
-    });
+    forEachLeaf(
+        region, simpleRegion, [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
+            if (leaf.full) return;
+            for (const Paths& rings :
+                 polygonsOfLeaf(leafRegion, leaf.rect, false, lines, oneSimpleRing))
+                for (const Path& ring : rings)
+                    for (const IntPoint& p : ring) {
+                        const auto key = keyOf(p.X, p.Y);
+                        if (index.corners.count(key) || seen.count(key)) continue;
+                        seen[key] = true;
+                        auto [segment, t] = index.segmentAt(p, 1.5);
+                        if (segment < 0) continue;  // a surface point inside the region
+                        const auto& s = index.segments[segment];
+                        const BoundarySegmentOrigin& origin = loops[s.loop].origins[s.index];
+                        if (origin.edge < 0) continue;
+                        // t runs along the loop; the edge may run the other way
+                        crossings.push_back({origin.edge, origin.segment, origin.use,
+                                             origin.forward ? t : 1 - t, p.X, p.Y});
+                    }
+        });
     return crossings;
 }
 
@@ -1133,60 +1141,63 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
     std::vector<std::uint32_t> ids;
     std::vector<std::vector<IntegerPoint2>> integerRings;
-    forEachLeaf(region, [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
-        ++mesh.cells;
-        for (const Paths& rings :
-             polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines, oneSimpleRing)) {
-            ids.clear();
-            integerRings.resize(rings.size());
-            for (std::size_t r = 0; r < rings.size(); ++r) {
-                const Path& ring = rings[r];
-                std::vector<IntegerPoint2>& integerRing = integerRings[r];
-                integerRing.clear();
-                for (std::size_t i = 0; i < ring.size(); ++i) {
-                    const IntPoint& p = ring[i];
-                    if (ring.size() > 3 && !lines.isCorner(p) && index.isCollinearOnChord(ring, i))
-                        continue;
-                    integerRing.push_back({p.X, p.Y});
-                    ids.push_back(resolve(p));
+    forEachLeaf(
+        region, isOneRingWithoutTouch(region),
+        [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
+            ++mesh.cells;
+            for (const Paths& rings :
+                 polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines, oneSimpleRing)) {
+                ids.clear();
+                integerRings.resize(rings.size());
+                for (std::size_t r = 0; r < rings.size(); ++r) {
+                    const Path& ring = rings[r];
+                    std::vector<IntegerPoint2>& integerRing = integerRings[r];
+                    integerRing.clear();
+                    for (std::size_t i = 0; i < ring.size(); ++i) {
+                        const IntPoint& p = ring[i];
+                        if (ring.size() > 3 && !lines.isCorner(p) &&
+                            index.isCollinearOnChord(ring, i))
+                            continue;
+                        integerRing.push_back({p.X, p.Y});
+                        ids.push_back(resolve(p));
+                    }
                 }
-            }
-            if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
-                // a whole cell without neighbours' points: its two triangles (section 7)
-                mesh.triangles.push_back({ids[0], ids[1], ids[2]});
-                mesh.triangles.push_back({ids[0], ids[2], ids[3]});
-                continue;
-            }
-            if (leaf.full && integerRings.size() == 1) {
-                // a whole cell with hanging points: no cap that could fold in space
-                for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
-                    mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
-                continue;
-            }
-            if (integerRings.size() == 1) {
-                // a cell with one side at a pole: no triangle flat against the surface there
-                const auto atPole = pointsAtPole(integerRings[0], ids, leaf.rect);
-                const auto triangles = atPole.empty()
-                                           ? std::vector<std::array<std::uint32_t, 3>>{}
-                                           : triangulateCellAtPole(integerRings[0], atPole);
-                for (const auto& t : triangles) {
+                if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
+                    // a whole cell without neighbours' points: its two triangles (section 7)
+                    mesh.triangles.push_back({ids[0], ids[1], ids[2]});
+                    mesh.triangles.push_back({ids[0], ids[2], ids[3]});
+                    continue;
+                }
+                if (leaf.full && integerRings.size() == 1) {
+                    // a whole cell with hanging points: no cap that could fold in space
+                    for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
+                        mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
+                    continue;
+                }
+                if (integerRings.size() == 1) {
+                    // a cell with one side at a pole: no triangle flat against the surface there
+                    const auto atPole = pointsAtPole(integerRings[0], ids, leaf.rect);
+                    const auto triangles = atPole.empty()
+                                               ? std::vector<std::array<std::uint32_t, 3>>{}
+                                               : triangulateCellAtPole(integerRings[0], atPole);
+                    for (const auto& t : triangles) {
+                        const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
+                        // the pole's one vertex twice: no triangle (a spike of a face is then left
+                        // without any, and fanned over its boundary like other faces too thin)
+                        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+                        mesh.triangles.push_back(tri);
+                    }
+                    if (!triangles.empty()) continue;
+                }
+                const Triangulation triangulation = triangulatePolygon(integerRings);
+                for (const auto& t : triangulation.triangles) {
                     const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                    // the pole's one vertex twice: no triangle (a spike of a face is then left
-                    // without any, and fanned over its boundary like other faces too thin)
+                    // points the boundary shares (a pole, a snapped cut) make zero-area triangles
                     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
                     mesh.triangles.push_back(tri);
                 }
-                if (!triangles.empty()) continue;
             }
-            const Triangulation triangulation = triangulatePolygon(integerRings);
-            for (const auto& t : triangulation.triangles) {
-                const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                // points the boundary shares (a pole, a snapped cut) make zero-area triangles
-                if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-                mesh.triangles.push_back(tri);
-            }
-        }
-    });
+        });
 
     // positions and exact normals at every vertex (section 8), in one pass that shares the
     // basis functions of equal u and v values; a shared vertex keeps its edge's position (the

@@ -70,11 +70,13 @@ private:
     std::vector<std::vector<ClipperLib::IntPoint>> integerBoundary(
         const std::vector<BoundaryLoop>& loops) const;
     ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
-    void buildKdTree(const ClipperLib::Paths& region);
+    // oneSimpleRing: the region is one ring that visits no point twice (the one-pass clip's
+    // case, simpleRingPiece)
+    void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing);
     // visit(leaf, piece, oneSimpleRing): the piece of the region that the leaf is cut from,
     // and whether it is known to be one simple ring
     void forEachLeaf(
-        const ClipperLib::Paths& region,
+        const ClipperLib::Paths& region, bool oneSimpleRing,
         const std::function<void(const Leaf&, const ClipperLib::Paths&, bool)>& visit) const;
 
     const TrimmedSurface& face_;
