@@ -1,11 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "geometry/BitMix.hpp"
 #include "geometry/Point.hpp"
 
 namespace nurbslod {
@@ -24,51 +24,55 @@ struct TriangleOrigin {
     std::uint32_t triangle = 0;
 };
 
-// The triangle that runs each directed side, by the side's two vertices: open addressing, as
-// the model's whole mesh fills it (an unordered_map there took 1.5% of trj7_b1-ec-214.stp's
-// tessellation at relative 1e-4).
-class TriangleOfSide {
+// The triangles' directed sides by the vertex they leave: for each vertex a list, newest first,
+// of its sides as (triangle, corner), linked through one array. A side is checked against its
+// triangle as it is now, so a triangle that changes is added again and its old sides are
+// skipped. The model's mesh was indexed in a hash table of twice its sides at 16 bytes each: on
+// bottle.brep at relative 1e-4 a fresh 4 MB array for 41 needles, whose first touch (page
+// faults) took 5% of the tessellation's time; these lists take 12 bytes a side, written in
+// order, and 4 a vertex.
+class SidesFromVertex {
 public:
-    explicit TriangleOfSide(std::size_t sides) {
-        std::size_t size = 16;
-        while (size < 2 * sides) size *= 2;
-        slots_.assign(size, {kEmpty, 0});
+    using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+    explicit SidesFromVertex(const Triangles& triangles) : triangles_(&triangles) {
+        std::uint32_t vertices = 0;
+        for (const auto& t : triangles)
+            for (const std::uint32_t v : t) vertices = std::max(vertices, v + 1);
+        first_.assign(vertices, kNone);
+        sides_.reserve(3 * triangles.size());
+        for (std::size_t i = 0; i < triangles.size(); ++i) add(i);
     }
-    void set(std::uint32_t from, std::uint32_t to, std::size_t triangle) {
-        if (2 * (used_ + 1) > slots_.size()) grow();
-        Slot& slot = find(key(from, to));
-        if (slot.key == kEmpty) ++used_;
-        slot = {key(from, to), triangle};
+    // Adds triangle i's sides as it is now.
+    void add(std::size_t i) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t from = (*triangles_)[i][k];
+            if (from >= first_.size()) first_.resize(from + 1, kNone);
+            sides_.push_back({static_cast<std::uint32_t>(i), k, first_[from]});
+            first_[from] = static_cast<std::uint32_t>(sides_.size() - 1);
+        }
     }
-    // The triangle with side from -> to, or none (-1).
+    // The triangle that runs from -> to now, the one added last where several do; none: -1.
     std::ptrdiff_t at(std::uint32_t from, std::uint32_t to) const {
-        const Slot& slot = const_cast<TriangleOfSide*>(this)->find(key(from, to));
-        return slot.key == kEmpty ? -1 : static_cast<std::ptrdiff_t>(slot.triangle);
+        if (from >= first_.size()) return -1;
+        for (std::uint32_t s = first_[from]; s != kNone; s = sides_[s].next) {
+            const auto& t = (*triangles_)[sides_[s].triangle];
+            const int k = sides_[s].corner;
+            if (t[k] == from && t[(k + 1) % 3] == to)
+                return static_cast<std::ptrdiff_t>(sides_[s].triangle);
+        }
+        return -1;
     }
 
 private:
-    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-    struct Slot {
-        std::uint64_t key;
-        std::size_t triangle;
+    static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    struct Side {
+        std::uint32_t triangle;
+        int corner;
+        std::uint32_t next;  // the vertex's side added before this one
     };
-    static std::uint64_t key(std::uint32_t from, std::uint32_t to) {
-        return (std::uint64_t{from} << 32) | to;
-    }
-    Slot& find(std::uint64_t key) {
-        const std::size_t mask = slots_.size() - 1;
-        std::size_t at = mixBits(key) & mask;
-        while (slots_[at].key != kEmpty && slots_[at].key != key) at = (at + 1) & mask;
-        return slots_[at];
-    }
-    void grow() {
-        std::vector<Slot> old(2 * slots_.size(), Slot{kEmpty, 0});
-        old.swap(slots_);
-        for (const Slot& slot : old)
-            if (slot.key != kEmpty) find(slot.key) = slot;
-    }
-    std::vector<Slot> slots_;
-    std::size_t used_ = 0;
+    const Triangles* triangles_;
+    std::vector<std::uint32_t> first_;  // per vertex: its side added last
+    std::vector<Side> sides_;
 };
 
 // A needle is a triangle of no area whose third corner lies on its longest side: a point cut
@@ -105,10 +109,7 @@ bool splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
                 (*origins)[i].corners[k] = {static_cast<std::uint32_t>(i), k};
         }
     }
-    TriangleOfSide triangleOfSide(3 * triangles.size());
-    for (std::size_t i = 0; i < triangles.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            triangleOfSide.set(triangles[i][k], triangles[i][(k + 1) % 3], i);
+    SidesFromVertex sides(triangles);
     std::vector<char> removed(triangles.size(), 0);
     // each split removes one needle; a split can make a new needle of a neighbour, so the
     // passes are bounded by the number of triangles that were there at the start
@@ -121,7 +122,7 @@ bool splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
         const std::uint32_t a = needle[longest], b = needle[(longest + 1) % 3];
         const std::uint32_t c = needle[(longest + 2) % 3];
         // the neighbour runs the long edge the other way: b -> a
-        const std::ptrdiff_t across = triangleOfSide.at(b, a);
+        const std::ptrdiff_t across = sides.at(b, a);
         if (across < 0 || removed[across]) continue;
         const auto j = static_cast<std::size_t>(across);
         const auto other = triangles[j];
@@ -143,9 +144,8 @@ bool splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
             from[j].corners = {fromB, fromC, fromD};
             from.push_back({{fromC, fromA, fromD}, from[j].triangle});
         }
-        for (const std::size_t index : {j, triangles.size() - 1})
-            for (int k = 0; k < 3; ++k)
-                triangleOfSide.set(triangles[index][k], triangles[index][(k + 1) % 3], index);
+        sides.add(j);
+        sides.add(triangles.size() - 1);
     }
     std::size_t out = 0;
     for (std::size_t i = 0; i < triangles.size(); ++i)

@@ -79,6 +79,28 @@ TEST(NeedleSplit, NeedleOnTheBorderStays) {
     EXPECT_EQ(triangles, before);
 }
 
+// The side index answers with the triangle that runs a side now: a triangle changed and added
+// again no longer answers for its old sides, and of two that run the same side the one added
+// last answers.
+TEST(NeedleSplit, SidesFromVertexFollowsChangedTriangles) {
+    Triangles triangles = {{0, 1, 2}, {1, 0, 3}};
+    SidesFromVertex sides(triangles);
+    EXPECT_EQ(sides.at(0, 1), 0);
+    EXPECT_EQ(sides.at(1, 0), 1);
+    EXPECT_EQ(sides.at(3, 1), 1);
+    EXPECT_EQ(sides.at(2, 1), -1);  // runs the other way
+    EXPECT_EQ(sides.at(9, 0), -1);  // a vertex no triangle has
+    triangles[1] = {1, 4, 3};
+    sides.add(1);
+    EXPECT_EQ(sides.at(1, 0), -1);  // its old side is gone
+    EXPECT_EQ(sides.at(1, 4), 1);
+    EXPECT_EQ(sides.at(3, 1), 1);
+    triangles.push_back({0, 1, 5});  // a second triangle on side 0 -> 1
+    sides.add(2);
+    EXPECT_EQ(sides.at(0, 1), 2);
+    EXPECT_EQ(sides.at(5, 0), 2);  // vertex 5 is new
+}
+
 // bottle.brep at relative 1e-4: the thin bands the kd-tree cuts off cells along the thread's
 // boundary (1e-6 mm wide) put points within the weld's reach of the neighbour's chord points,
 // and the weld made 216 needles of them. None is left, and none of the mesh's triangles has a
