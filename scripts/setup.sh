@@ -21,7 +21,7 @@ PACKAGES=(
     libcoin-dev libopenmesh-dev libglm-dev libeigen3-dev libtbb-dev pybind11-dev
     python3-dev python3-numpy python3-open3d
     libmeshoptimizer-dev libzstd-dev libsqlite3-dev libcli11-dev
-    libgtest-dev libgmock-dev libbenchmark-dev libpolyclipping-dev
+    libgtest-dev libgmock-dev libbenchmark-dev libpolyclipping-dev libboost-dev
     xvfb xauth
 )
 
