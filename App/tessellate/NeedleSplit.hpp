@@ -39,7 +39,9 @@ public:
         for (const auto& t : triangles)
             for (const std::uint32_t v : t) vertices = std::max(vertices, v + 1);
         first_.assign(vertices, kNone);
-        sides_.reserve(3 * triangles.size());
+        // room for the triangles that splits change and add: growing the array past its
+        // capacity would copy it whole
+        sides_.reserve(3 * triangles.size() + 6 * kSplitsWithoutCopy);
         for (std::size_t i = 0; i < triangles.size(); ++i) add(i);
     }
     // Adds triangle i's sides as it is now.
@@ -62,6 +64,9 @@ public:
         }
         return -1;
     }
+
+    // splits whose changes fit in the room reserved for them
+    static constexpr std::size_t kSplitsWithoutCopy = 1024;
 
 private:
     static constexpr std::uint32_t kNone = ~std::uint32_t{0};
@@ -102,6 +107,7 @@ bool splitNeedles(std::vector<std::array<std::uint32_t, 3>>& triangles, const Po
         ++first;
     if (first == triangles.size()) return false;
     if (origins) {
+        origins->reserve(triangles.size() + SidesFromVertex::kSplitsWithoutCopy);
         origins->resize(triangles.size());
         for (std::size_t i = 0; i < triangles.size(); ++i) {
             (*origins)[i].triangle = static_cast<std::uint32_t>(i);
