@@ -569,10 +569,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                                            edge.lineSimplification, &points);
     };
     // The curves of an edge and their points evaluated so far, kept from the edge's first
-    // discretisation to a second where one may follow (step 1a): only the budget changes, so
-    // every point evaluated the first time is good the second. bottle.brep at relative 1e-4
-    // discretises 12 of its 157 edges again, its thread's helices, and that took 7 ms where
-    // the first time over all of them took 11.
+    // discretisation to the second that steps 1a and 1b may give it: only the budget changes,
+    // so every point evaluated the first time is good the second. bottle.brep at relative 1e-4
+    // discretises 12 of its 157 edges again in step 1a, its thread's helices, and that took
+    // 7 ms where the first time over all of them took 11; trj7_b1-ec-214.stp 539 of its 1,178
+    // in step 1b, 12.7 ms against 22.5.
     struct EvaluatedCurves {
         std::vector<CurveOnSurface> curves;
         std::vector<CurvePoints> points;  // into curves' elements, which a move leaves in place
@@ -611,15 +612,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                            &points);
     };
 
-    // 1. every edge discretised once for all its faces (sections 4 and 5.1); the points of
-    // those whose narrowed gap step 1a checks are kept for a second time
-    const bool checkNarrowedGaps = options.mode == ErrorMode::Guaranteed && options.narrowShareGaps;
+    // 1. every edge discretised once for all its faces (sections 4 and 5.1), its points kept
+    // up to step 1c
+    keepCurves.assign(model.edges.size(), 1);
     auto narrowedGap = [&](size_t e) {
         return uses[e].size() >= 2 && !model.edges[e].degenerated &&
                edgeShareGap[e] < budget.shareGap;
     };
-    if (checkNarrowedGaps)
-        for (size_t e = 0; e < model.edges.size(); ++e) keepCurves[e] = narrowedGap(e);
     std::vector<EdgePolyline> polylines(model.edges.size());
     // each use's (u, v) at the edge's parameters
     auto sampleUses = [&](size_t e) {
@@ -642,7 +641,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // gap back (the fixed split, or what the face had before narrowing) and their edges are
     // discretised again with it. hammer.iges at relative 1e-4 had a point 0.06 T apart, farther
     // than its edge's samples had measured: an open crack.
-    if (checkNarrowedGaps) {
+    if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
         std::vector<char> tooNarrow(model.edges.size(), 0);
         tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
             if (!narrowedGap(e)) return;
@@ -665,9 +664,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
-    keepCurves.assign(model.edges.size(), 0);
-    keptCurves.clear();
-    keptCurves.shrink_to_fit();
 
     // The segments of face f's boundary polygon that cross another of its segments, as
     // (edge, segment) pairs: proper crossings only, so segments that share an end (consecutive
@@ -777,6 +773,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::vector<int> edges(again.begin(), again.end());
         tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
+
+    keepCurves.assign(model.edges.size(), 0);
+    keptCurves.clear();
+    keptCurves.shrink_to_fit();
 
     // 1c. Chords that still cross in a face's (u, v), and loops of fewer than three points, are
     // halved, for every face of their edges at once. A crossing left to the loop repair of
