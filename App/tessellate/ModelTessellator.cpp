@@ -86,9 +86,20 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                                     std::to_string(options.tolerance));
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<tbb::global_control> threads;
-    if (options.threads > 0)
+    if (options.threads > 1)
         threads = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, options.threads);
+    // With one thread the loops run in order on the calling thread: oneTBB's first parallel_for
+    // in a process starts its scheduler, about 0.3 ms, a tenth of a small model's tessellation
+    // (bug3883_xr2-ct-214_bolt.stp at relative 1e-3 takes 2.6 ms). Each loop's iterations
+    // write only their own results, so the order does not change them.
+    const bool oneThread = options.threads == 1;
+    auto forEachIndex = [oneThread](auto first, auto last, const auto& body) {
+        if (oneThread)
+            for (auto i = first; i < last; ++i) body(i);
+        else
+            tbb::parallel_for(first, last, body);
+    };
     // the fixed split: the share gap, and the surface share a face needing more is held to
     const ErrorBudget budget = ErrorBudget::of(options.tolerance, options.mode);
     const int faceCount = static_cast<int>(model.faces.size());
@@ -204,7 +215,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // each face's share of the tolerance: what its surface does not need goes to its trimming
     // curves (ErrorBudget::forFace)
     std::vector<ErrorBudget> faceBudgets(faceCount, budget);
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    forEachIndex(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
             faceBudgets[f] =
@@ -248,7 +259,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         constexpr double margin = 1.2;
         const double largestGap = 2 * 0.95 * options.tolerance;
         std::vector<double> needed(model.edges.size(), 0), sharedNeed(model.edges.size(), 0);
-        tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+        forEachIndex(size_t(0), model.edges.size(), [&](size_t e) {
             if (uses[e].size() < 2 || model.edges[e].degenerated) return;
             std::vector<CurveOnSurface> curves;
             for (const auto& u : uses[e]) curves.push_back(curveOnSurface(u));
@@ -430,7 +441,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // columns, which cut their sides 347 times at relative 1e-4 instead of 731.
     // The even columns below are set on these lines too, so that edges follow them.
     std::vector<FaceKdTreeLines> faceLines(faceCount);
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    forEachIndex(0, faceCount, [&](int f) {
         if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
     });
     // Even columns (evenColumnNeeds) where a face's region is its whole frame box and its
@@ -453,7 +464,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return node;
     };
     std::vector<char> columnCandidate(faceCount, 0);
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    forEachIndex(0, faceCount, [&](int f) {
         const auto grids = faceLines[f].both();
         columnCandidate[f] = options.evenColumns && failure[f].empty() && grids &&
                              !hasFreeEdge(f) && regionIsTheBox(model.faces[f], *grids);
@@ -516,7 +527,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                         [&](int node) { return columnsRuledOut[node]; }))
             return faces;
         std::vector<std::vector<int>> needs(nodes.size());
-        tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
+        forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
                 needs[k] = evenColumnNeeds(model.faces[f], *faceLines[f].both(), nodes[k] % 2,
@@ -634,7 +645,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         polylines[e].params = discretize(e, edgeBudget(e, curveUse[e] >= 0));
         sampleUses(e);
     };
-    tbb::parallel_for(size_t(0), model.edges.size(), discretizeOnce);
+    forEachIndex(size_t(0), model.edges.size(), discretizeOnce);
 
     // 1a. A narrowed gap is checked at its edges' own points: where the faces' points of one are
     // farther apart than it (between the samples above), the faces of that edge take their
@@ -643,7 +654,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // than its edge's samples had measured: an open crack.
     if (options.mode == ErrorMode::Guaranteed && options.narrowShareGaps) {
         std::vector<char> tooNarrow(model.edges.size(), 0);
-        tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+        forEachIndex(size_t(0), model.edges.size(), [&](size_t e) {
             if (!narrowedGap(e)) return;
             const auto& poly = polylines[e];
             for (size_t k = 1; k + 1 < poly.params.size() && !tooNarrow[e]; ++k) {
@@ -662,7 +673,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::set<int> again = edgesAfterRebudget(widened);
         for (const int e : again) holdEdgeGapToFaces(e, unnarrowedEdgeGap[e]);
         const std::vector<int> edges(again.begin(), again.end());
-        tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
+        forEachIndex(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
 
     // The segments of face f's boundary polygon that cross another of its segments, as
@@ -771,7 +782,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::set<int> again = edgesAfterRebudget(changed);
         if (again.empty()) break;
         const std::vector<int> edges(again.begin(), again.end());
-        tbb::parallel_for(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
+        forEachIndex(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
 
     keepCurves.assign(model.edges.size(), 0);
@@ -802,7 +813,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         };
         for (int round = 0; round < kHalvingRounds; ++round) {
             std::vector<std::set<std::pair<int, int>>> toSplit(faceCount);
-            tbb::parallel_for(0, faceCount, [&](int f) {
+            forEachIndex(0, faceCount, [&](int f) {
                 if (!failure[f].empty()) return;
                 toSplit[f] = crossingSegments(f, true);
                 for (const auto& loop : model.faces[f].loops) {
@@ -823,8 +834,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 for (const auto& [e, k] : list) byEdge[e].insert(k);
             if (byEdge.empty()) break;
             const std::vector<std::pair<int, std::set<int>>> edges(byEdge.begin(), byEdge.end());
-            tbb::parallel_for(size_t(0), edges.size(),
-                              [&](size_t i) { splitSegments(edges[i].first, edges[i].second); });
+            forEachIndex(size_t(0), edges.size(),
+                         [&](size_t i) { splitSegments(edges[i].first, edges[i].second); });
         }
     }
 
@@ -834,7 +845,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // vertex's foot on the face's surface, so that the face covers its corner and the faces
     // that meet there end at nearly the same point.
     std::vector<std::vector<std::array<Point3, 2>>> endPoints(model.edges.size());
-    tbb::parallel_for(size_t(0), model.edges.size(), [&](size_t e) {
+    forEachIndex(size_t(0), model.edges.size(), [&](size_t e) {
         if (uses[e].empty()) return;
         auto& poly = polylines[e];
         const auto [firstVertex, lastVertex] = endVertices[e];
@@ -1089,7 +1100,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::vector<std::vector<BoundaryCrossing>> crossings(faceCount);
     std::vector<char> thinFace(faceCount, 0);  // loops without area: fanned in the second pass
     std::atomic<std::size_t> done{0};
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    forEachIndex(0, faceCount, [&](int f) {
         if (!failure[f].empty()) return;
         try {
             CellChoices choices;
@@ -1187,7 +1198,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 failure[f] = "no triangles inside the trimming loops";
         }
     };
-    tbb::parallel_for(0, faceCount, [&](int f) {
+    forEachIndex(0, faceCount, [&](int f) {
         meshFace(f);
         const std::size_t n = ++done;
         if (options.progress) options.progress(n, static_cast<std::size_t>(faceCount));
@@ -1219,7 +1230,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     listed[use.face] = 1;
                     again.push_back(use.face);
                 }
-        tbb::parallel_for(0, static_cast<int>(again.size()), [&](int i) { meshFace(again[i]); });
+        forEachIndex(0, static_cast<int>(again.size()), [&](int i) { meshFace(again[i]); });
     }
     tessellators.clear();
 
