@@ -162,6 +162,34 @@ TEST(Tessellation, PrimitivesAreClosedAndWithinTolerance) {
             }
 }
 
+// One thread runs the tessellation's loops in order without oneTBB, more threads on its
+// workers: the meshes are the same to the bit (each iteration writes only its own results). A
+// filleted box and a sphere, and bottle.brep where the corpus is there (its thread's edges are
+// discretised a second time, its needles split).
+TEST(Tessellation, OneThreadGivesTheMeshOfSeveral) {
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 20, 30).Shape();
+    BRepFilletAPI_MakeFillet fillet(box);
+    for (TopExp_Explorer it(box, TopAbs_EDGE); it.More(); it.Next())
+        fillet.Add(2.0, TopoDS::Edge(it.Current()));
+    std::vector<TopoDS_Shape> shapes = {fillet.Shape(), BRepPrimAPI_MakeSphere(5.0).Shape()};
+    if (std::filesystem::exists(kCorpus / "bottle.brep"))
+        shapes.push_back(occ::readShape((kCorpus / "bottle.brep").string()));
+    for (const auto& shape : shapes) {
+        const Model model = occ::importModel(shape);
+        TessellationOptions options;
+        options.tolerance = 1e-4 * model.boundingBoxDiagonal;
+        options.threads = 1;
+        const auto one = tessellateModel(model, options);
+        options.threads = 2;
+        const auto two = tessellateModel(model, options);
+        ASSERT_GT(one.mesh.triangles.size(), 0u);
+        EXPECT_EQ(one.mesh.triangles, two.mesh.triangles);
+        EXPECT_EQ(one.mesh.positions, two.mesh.positions);
+        EXPECT_EQ(one.mesh.normals, two.mesh.normals);
+        EXPECT_EQ(one.mesh.triangleFaces, two.mesh.triangleFaces);
+    }
+}
+
 // Faces closed by a seam: the two sides of the seam are two uses of one edge in one face; a cut
 // found on one side must not be placed on the other (this once threw a sphere 28 T off).
 TEST(Tessellation, SeamFacesAreClosedAndWithinTolerance) {
