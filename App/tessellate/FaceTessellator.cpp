@@ -673,6 +673,11 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
                                 std::abs(area) >= (1 - 1e-9) * cellArea &&
                                 isWholeCell(piece, r, simplePiece);
                     pieceFraction = fractionOfCell(boundsOf(piece), r);
+                    // The clipper's piece of a region of several rings (a face with holes)
+                    // is one simple ring in most cells, away from the holes: the cells below
+                    // then take the one-pass clip too (trj7_b1-ec-214.stp at relative 1e-4:
+                    // 2,733 M -> 2,579 M instructions).
+                    if (!simplePiece) simplePiece = isOneRingWithoutTouch(piece);
                     node.region = std::make_shared<const Paths>(std::move(piece));
                     node.simpleRing = simplePiece;
                 }
