@@ -1,0 +1,83 @@
+// Pcurves remade from an edge's 3D curve (pcurveFromCurve): a curve that a surface's straight
+// (u, v) line maps onto comes out as that line of degree 1, without the interpolation; any
+// other stays a cubic interpolant. Both follow the curve within the accuracy asked for.
+#include <gtest/gtest.h>
+
+#include <GeomConvert.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <cmath>
+#include <functional>
+
+#include "occ/PcurveFromEdgeCurve.hpp"
+
+namespace nurbslod {
+namespace {
+
+// A cylinder of radius 5 and height 10 in its rational B-spline form (quarter arcs).
+Handle(Geom_BSplineSurface) cylinder() {
+    const Handle(Geom_Surface) trimmed = new Geom_RectangularTrimmedSurface(
+        new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 5.0), 0.0, 2 * M_PI, 0.0, 10.0);
+    return GeomConvert::SurfaceToBSplineSurface(trimmed);
+}
+
+// The largest distance, at 200 parameters, between the remade pcurve on the surface and the
+// curve it was made from.
+double largestMiss(const Handle(Geom2d_BSplineCurve) & pcurve,
+                   const Handle(Geom_BSplineSurface) & surface,
+                   const std::function<gp_Pnt(double)>& curve, double first, double last) {
+    double worst = 0;
+    for (int k = 0; k <= 200; ++k) {
+        const double s = first + (last - first) * k / 200;
+        const gp_Pnt2d uv = pcurve->Value(s);
+        worst = std::max(worst, surface->Value(uv.X(), uv.Y()).Distance(curve(s)));
+    }
+    return worst;
+}
+
+TEST(PcurveFromCurve, LineInParametersComesOutAsALine) {
+    const Handle(Geom_BSplineSurface) surface = cylinder();
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    const double first = u0 + 0.1 * (u1 - u0), last = u0 + 0.9 * (u1 - u0);
+    constexpr double accuracy = 1e-6;
+    // an iso-line (a circle) and a slanted line (a helix), each from a guess a little off
+    for (const double slope : {0.0, 0.4}) {
+        auto uv = [&](double s) { return gp_Pnt2d(s, 2.0 + slope * (s - first)); };
+        auto curve = [&](double s) {
+            const gp_Pnt2d p = uv(s);
+            return surface->Value(p.X(), p.Y());
+        };
+        auto guess = [&](double s) { return gp_Pnt2d(uv(s).X() + 1e-3, uv(s).Y() - 1e-3); };
+        const Handle(Geom2d_BSplineCurve) pcurve =
+            occ::pcurveFromCurve(curve, surface, guess, first, last, accuracy);
+        ASSERT_FALSE(pcurve.IsNull()) << "slope " << slope;
+        EXPECT_EQ(pcurve->Degree(), 1) << "slope " << slope;
+        EXPECT_EQ(pcurve->NbPoles(), 2) << "slope " << slope;
+        EXPECT_LE(largestMiss(pcurve, surface, curve, first, last), 1e-4 * accuracy);
+    }
+}
+
+TEST(PcurveFromCurve, CurveInParametersStaysACubic) {
+    const Handle(Geom_BSplineSurface) surface = cylinder();
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    const double first = u0 + 0.1 * (u1 - u0), last = u0 + 0.9 * (u1 - u0);
+    constexpr double accuracy = 1e-6;
+    // a wave in v: the line through its ends' projections is tried and refused, its middle
+    // a millimetre off the curve
+    auto uv = [&](double s) { return gp_Pnt2d(s, 2.0 + 0.2 * std::sin(2 * (s - first))); };
+    auto curve = [&](double s) {
+        const gp_Pnt2d p = uv(s);
+        return surface->Value(p.X(), p.Y());
+    };
+    auto guess = [&](double s) { return uv(s); };
+    const Handle(Geom2d_BSplineCurve) pcurve =
+        occ::pcurveFromCurve(curve, surface, guess, first, last, accuracy);
+    ASSERT_FALSE(pcurve.IsNull());
+    EXPECT_EQ(pcurve->Degree(), 3);
+    EXPECT_LE(largestMiss(pcurve, surface, curve, first, last), accuracy);
+}
+
+}  // namespace
+}  // namespace nurbslod
