@@ -67,6 +67,18 @@ gp_Pnt2d projectNear(const GeomAdaptor_Surface& surface, const gp_Pnt& point, gp
     return {u, v};
 }
 
+// The straight B-spline of degree 1 from a at `first` to b at `last`.
+Handle(Geom2d_BSplineCurve)
+    lineOver(const gp_Pnt2d& a, const gp_Pnt2d& b, double first, double last) {
+    TColgp_Array1OfPnt2d poles(1, 2);
+    poles(1) = a, poles(2) = b;
+    TColStd_Array1OfReal ends(1, 2);
+    ends(1) = first, ends(2) = last;
+    TColStd_Array1OfInteger multiplicities(1, 2);
+    multiplicities(1) = multiplicities(2) = 2;
+    return new Geom2d_BSplineCurve(poles, ends, multiplicities, 1);
+}
+
 // The interpolant has a knot at every sample. Where the pcurve is a line in the edge parameter
 // (a circle's pcurve on a surface whose rational arcs match the edge's: u = s), a line of
 // degree 1 replaces it: the 3D curve on the surface then keeps the surface's degree, and the
@@ -90,13 +102,7 @@ Handle(Geom2d_BSplineCurve) asLineWherePossible(const Handle(Geom2d_BSplineCurve
         if (curve->Pole(i).Distance(gp_Pnt2d(a.XY() + s * (b.XY() - a.XY()))) > tolerance)
             return curve;
     }
-    TColgp_Array1OfPnt2d poles(1, 2);
-    poles(1) = a, poles(2) = b;
-    TColStd_Array1OfReal ends(1, 2);
-    ends(1) = first, ends(2) = last;
-    TColStd_Array1OfInteger multiplicities(1, 2);
-    multiplicities(1) = multiplicities(2) = 2;
-    return new Geom2d_BSplineCurve(poles, ends, multiplicities, 1);
+    return lineOver(a, b, first, last);
 }
 
 // The line from a to b over [first, last], where the surface maps it onto `curve` within
@@ -116,13 +122,7 @@ Handle(Geom2d_BSplineCurve)
     if (!mapsOnto(kChecks / 2)) return {};
     for (int k = 1; k < kChecks; ++k)
         if (k != kChecks / 2 && !mapsOnto(k)) return {};
-    TColgp_Array1OfPnt2d poles(1, 2);
-    poles(1) = a, poles(2) = b;
-    TColStd_Array1OfReal ends(1, 2);
-    ends(1) = first, ends(2) = last;
-    TColStd_Array1OfInteger multiplicities(1, 2);
-    multiplicities(1) = multiplicities(2) = 2;
-    return new Geom2d_BSplineCurve(poles, ends, multiplicities, 1);
+    return lineOver(a, b, first, last);
 }
 
 }  // namespace

@@ -14,12 +14,21 @@
 namespace nurbslod {
 namespace {
 
-// A cylinder of radius 5 and height 10 in its rational B-spline form (quarter arcs).
-Handle(Geom_BSplineSurface) cylinder() {
-    const Handle(Geom_Surface) trimmed = new Geom_RectangularTrimmedSurface(
-        new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 5.0), 0.0, 2 * M_PI, 0.0, 10.0);
-    return GeomConvert::SurfaceToBSplineSurface(trimmed);
-}
+// A cylinder of radius 5 and height 10 in its rational B-spline form (quarter arcs), and the
+// edge parameter range the tests use: the middle 0.8 of its u range.
+struct Cylinder {
+    Handle(Geom_BSplineSurface) surface;
+    double first = 0, last = 0;
+    Cylinder() {
+        const Handle(Geom_Surface) trimmed = new Geom_RectangularTrimmedSurface(
+            new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 5.0), 0.0, 2 * M_PI, 0.0, 10.0);
+        surface = GeomConvert::SurfaceToBSplineSurface(trimmed);
+        double u0, u1, v0, v1;
+        surface->Bounds(u0, u1, v0, v1);
+        first = u0 + 0.1 * (u1 - u0);
+        last = u0 + 0.9 * (u1 - u0);
+    }
+};
 
 // The largest distance, at 200 parameters, between the remade pcurve on the surface and the
 // curve it was made from.
@@ -36,10 +45,9 @@ double largestMiss(const Handle(Geom2d_BSplineCurve) & pcurve,
 }
 
 TEST(PcurveFromCurve, LineInParametersComesOutAsALine) {
-    const Handle(Geom_BSplineSurface) surface = cylinder();
-    double u0, u1, v0, v1;
-    surface->Bounds(u0, u1, v0, v1);
-    const double first = u0 + 0.1 * (u1 - u0), last = u0 + 0.9 * (u1 - u0);
+    const Cylinder cylinder;
+    const Handle(Geom_BSplineSurface)& surface = cylinder.surface;
+    const double first = cylinder.first, last = cylinder.last;
     constexpr double accuracy = 1e-6;
     // an iso-line (a circle) and a slanted line (a helix), each from a guess a little off
     for (const double slope : {0.0, 0.4}) {
@@ -59,10 +67,9 @@ TEST(PcurveFromCurve, LineInParametersComesOutAsALine) {
 }
 
 TEST(PcurveFromCurve, CurveInParametersStaysACubic) {
-    const Handle(Geom_BSplineSurface) surface = cylinder();
-    double u0, u1, v0, v1;
-    surface->Bounds(u0, u1, v0, v1);
-    const double first = u0 + 0.1 * (u1 - u0), last = u0 + 0.9 * (u1 - u0);
+    const Cylinder cylinder;
+    const Handle(Geom_BSplineSurface)& surface = cylinder.surface;
+    const double first = cylinder.first, last = cylinder.last;
     constexpr double accuracy = 1e-6;
     // a wave in v: the line through its ends' projections is tried and refused, its middle
     // a millimetre off the curve
