@@ -112,16 +112,22 @@ Handle(Geom2d_BSplineCurve)
     lineThroughEnds(const std::function<gp_Pnt(double)>& curve, const GeomAdaptor_Surface& surface,
                     double first, double last, const gp_Pnt2d& a, const gp_Pnt2d& b,
                     double within) {
-    if (!(last > first)) return {};
+    if (!(last > first) || !std::isfinite(a.X()) || !std::isfinite(a.Y()) ||
+        !std::isfinite(b.X()) || !std::isfinite(b.Y()))
+        return {};
     constexpr int kChecks = 64;
     auto mapsOnto = [&](int k) {
         const double s = double(k) / kChecks;
         const gp_Pnt2d uv(a.XY() + s * (b.XY() - a.XY()));
         return surface.Value(uv.X(), uv.Y()).Distance(curve(first + (last - first) * s)) <= within;
     };
-    if (!mapsOnto(kChecks / 2)) return {};
-    for (int k = 1; k < kChecks; ++k)
-        if (k != kChecks / 2 && !mapsOnto(k)) return {};
+    try {
+        if (!mapsOnto(kChecks / 2)) return {};
+        for (int k = 1; k < kChecks; ++k)
+            if (k != kChecks / 2 && !mapsOnto(k)) return {};
+    } catch (const Standard_Failure&) {
+        return {};  // a curve the surface cannot take: the interpolation decides
+    }
     return lineOver(a, b, first, last);
 }
 
