@@ -89,10 +89,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     if (options.threads > 1)
         threads = std::make_unique<tbb::global_control>(
             tbb::global_control::max_allowed_parallelism, options.threads);
-    // With one thread the loops run in order on the calling thread: oneTBB's first parallel_for
-    // in a process starts its scheduler, about 0.3 ms, a tenth of a small model's tessellation
-    // (bug3883_xr2-ct-214_bolt.stp at relative 1e-3 takes 2.6 ms). Each loop's iterations
-    // write only their own results, so the order does not change them.
+    // With one thread the loops run in order on the calling thread, without oneTBB: its
+    // global_control and its first parallel_for in a process start its scheduler, about 0.6 ms
+    // together, a quarter of a small model's tessellation (bug3883_xr2-ct-214_bolt.stp at
+    // relative 1e-3 took 2.5 ms). Each loop's iterations write only their own results, so the
+    // order does not change them.
     const bool oneThread = options.threads == 1;
     auto forEachIndex = [oneThread](auto first, auto last, const auto& body) {
         if (oneThread)
@@ -590,10 +591,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::vector<CurvePoints> points;  // into curves' elements, which a move leaves in place
     };
     std::vector<EvaluatedCurves> keptCurves(model.edges.size());
-    std::vector<char> keepCurves(model.edges.size(), 0);
+    bool keepCurves = true;  // up to step 1c
     auto discretize = [&](size_t e, const ErrorBudget& edge) {
         EvaluatedCurves own;
-        EvaluatedCurves& evaluated = keepCurves[e] ? keptCurves[e] : own;
+        EvaluatedCurves& evaluated = keepCurves ? keptCurves[e] : own;
         if (evaluated.curves.empty()) {
             for (const auto& u : uses[e]) evaluated.curves.push_back(curveOnSurface(u));
             evaluated.points = curvePointsOf(evaluated.curves);
@@ -625,7 +626,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1), its points kept
     // up to step 1c
-    keepCurves.assign(model.edges.size(), 1);
     auto narrowedGap = [&](size_t e) {
         return uses[e].size() >= 2 && !model.edges[e].degenerated &&
                edgeShareGap[e] < budget.shareGap;
@@ -785,7 +785,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         forEachIndex(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
 
-    keepCurves.assign(model.edges.size(), 0);
+    keepCurves = false;
     keptCurves.clear();
     keptCurves.shrink_to_fit();
 
