@@ -45,6 +45,7 @@
 #include <limits>
 #include <optional>
 
+#include "occ/ClampedBSpline.hpp"
 #include "occ/ClosedSurfaceUnwrapper.hpp"
 #include "occ/FaceSewing.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
@@ -110,8 +111,7 @@ Handle(Geom2d_BSplineCurve)
         basis = trimmed->BasisCurve();
     Handle(Geom2d_BSplineCurve) result;
     if (auto bspline = Handle(Geom2d_BSplineCurve)::DownCast(basis)) {
-        result = Handle(Geom2d_BSplineCurve)::DownCast(bspline->Copy());
-        if (result->IsPeriodic()) result->SetNotPeriodic();
+        result = clampedCurve(Handle(Geom2d_BSplineCurve)::DownCast(bspline->Copy()), first, last);
     } else if (basis->IsKind(STANDARD_TYPE(Geom2d_Line)) ||
                basis->IsKind(STANDARD_TYPE(Geom2d_BezierCurve))) {
         result = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(basis, first, last));
@@ -161,8 +161,7 @@ Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face) {
     }
     // Unclamped (periodic) knots would break the Bezier extraction; clamp them. The parameter
     // does not change, so the pcurves stay valid.
-    if (bspline->IsUPeriodic()) bspline->SetUNotPeriodic();
-    if (bspline->IsVPeriodic()) bspline->SetVNotPeriodic();
+    bspline = clampedSurface(bspline);
     if (!location.IsIdentity()) bspline->Transform(location.Transformation());
     return bspline;
 }
@@ -319,7 +318,7 @@ Handle(Geom2d_BSplineCurve)
         try {
             Handle(Geom2d_BSplineCurve) exact = Geom2dConvert::CurveToBSplineCurve(
                 new Geom2d_TrimmedCurve(basis, edge.first, edge.last), Convert_TgtThetaOver2);
-            if (exact->IsPeriodic()) exact->SetNotPeriodic();
+            exact = clampedCurve(exact, edge.first, edge.last);
             double worst = 0;
             for (int k = 0; k <= 32; ++k) {
                 const double s = edge.first + (edge.last - edge.first) * k / 32;

@@ -1,0 +1,42 @@
+#include "occ/ClampedBSpline.hpp"
+
+namespace nurbslod::occ {
+
+namespace {
+
+bool clampedU(const Geom_BSplineSurface& s) {
+    return !s.IsUPeriodic() && s.UMultiplicity(1) == s.UDegree() + 1 &&
+           s.UMultiplicity(s.NbUKnots()) == s.UDegree() + 1;
+}
+
+bool clampedV(const Geom_BSplineSurface& s) {
+    return !s.IsVPeriodic() && s.VMultiplicity(1) == s.VDegree() + 1 &&
+           s.VMultiplicity(s.NbVKnots()) == s.VDegree() + 1;
+}
+
+}  // namespace
+
+Handle(Geom_BSplineSurface) clampedSurface(const Handle(Geom_BSplineSurface) & surface) {
+    if (clampedU(*surface) && clampedV(*surface)) return surface;
+    Handle(Geom_BSplineSurface) result = Handle(Geom_BSplineSurface)::DownCast(surface->Copy());
+    double u0, u1, v0, v1;
+    result->Bounds(u0, u1, v0, v1);
+    result->Segment(u0, u1, v0, v1);
+    return result;
+}
+
+Handle(Geom2d_BSplineCurve)
+    clampedCurve(const Handle(Geom2d_BSplineCurve) & curve, double first, double last) {
+    const int end = curve->Degree() + 1;
+    if (!curve->IsPeriodic() && curve->Multiplicity(1) == end &&
+        curve->Multiplicity(curve->NbKnots()) == end)
+        return curve;
+    Handle(Geom2d_BSplineCurve) result = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());
+    if (result->IsPeriodic())
+        result->Segment(first, last);
+    else
+        result->Segment(result->FirstParameter(), result->LastParameter());
+    return result;
+}
+
+}  // namespace nurbslod::occ
