@@ -357,11 +357,12 @@ int runVerify(const VerifyArguments& arguments) {
     for (int face : report.facesMissing) std::printf("%8d %10d  missing\n", face, 0);
     std::printf(
         "faces %d  triangles %zu  vertices %zu  max_dev %s  max_cover %s  tol %s  over_tol %zu  "
-        "missing %zu  open_edges %zu  nonmanifold %zu  degenerate %zu  -> %s\n",
+        "missing %zu  unmeasured %zu  open_edges %zu  nonmanifold %zu  degenerate %zu  -> %s\n",
         report.shapeFaces, report.triangles, report.vertices, formatNumber(report.maxDev).c_str(),
         formatNumber(report.maxCover).c_str(), formatNumber(tolerance).c_str(),
-        report.facesOverTolerance.size(), report.facesMissing.size(), report.openEdges,
-        report.nonManifoldEdges, report.degenerateTriangles, report.pass ? "PASS" : "FAIL");
+        report.facesOverTolerance.size(), report.facesMissing.size(), report.facesUnmeasured.size(),
+        report.openEdges, report.nonManifoldEdges, report.degenerateTriangles,
+        report.pass ? "PASS" : "FAIL");
     if (!arguments.jsonPath.empty()) {
         std::ofstream file(arguments.jsonPath);
         file << reportJson(report, arguments.mesh, true) << '\n';

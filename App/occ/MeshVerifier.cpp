@@ -467,6 +467,17 @@ public:
         FaceDeviation result;
         result.triangles = triangles_.size();
         result.edgeTolerance = largestEdgeTolerance(face_);
+        // BRepMesh refuses a deflection within its confusion distance; a tolerance that small
+        // is also below what the B-rep's own points mean
+        if (!(referenceDeflection_ > Precision::Confusion())) {
+            result.measured = false;
+            result.problem =
+                "the tolerance is too small to measure: the reference mesh needs "
+                "tolerance / " +
+                std::to_string(static_cast<int>(referenceDivisor)) +
+                " above OpenCASCADE's confusion distance (1e-7)";
+            return result;
+        }
         const ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_);
         if (reference.triangles.empty()) {
             result.measured = false;
@@ -881,7 +892,8 @@ VerificationReport verifyMesh(const TopoDS_Shape& shape, const Mesh& mesh, doubl
     report.openEdges = edges.open;
     report.nonManifoldEdges = edges.nonManifold;
     report.vertices = edges.vertices;
-    report.pass = report.facesOverTolerance.empty() && report.facesMissing.empty();
+    report.pass = report.facesOverTolerance.empty() && report.facesMissing.empty() &&
+                  report.facesUnmeasured.empty();
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

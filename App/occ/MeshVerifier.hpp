@@ -45,7 +45,9 @@ struct VerificationReport {
     std::size_t degenerateTriangles = 0;      // area ~ 0 relative to the face's largest triangle
     std::size_t triangles = 0, vertices = 0;  // vertices: welded positions used by triangles
     double seconds = 0;
-    bool pass = false;  // no face over tolerance and no face missing
+    // no face over tolerance, none missing and none unmeasured: a face that could not be
+    // measured is not known to be within the tolerance
+    bool pass = false;
 };
 
 // Measures the deviation of the mesh from the exact B-rep, per face and both ways, as

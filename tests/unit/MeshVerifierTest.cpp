@@ -320,3 +320,19 @@ TEST(MeshVerifier, ClassifiesManyBorderSamplesOnSeveralThreadsAtOnce) {
         ASSERT_NEAR(report.maxDev, first.maxDev, 1e-9) << "run " << run;
     }
 }
+
+// A tolerance whose reference mesh would need a deflection within OpenCASCADE's confusion
+// distance cannot be measured: the faces are reported unmeasured, with the reason, and the
+// mesh does not pass (it was not shown to be within the tolerance).
+TEST(MeshVerifier, ToleranceTooSmallToMeasureDoesNotPass) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(1e-3, 2e-3, 1e-3).Shape();
+    const Mesh mesh = brepMeshOf(box, 1e-5, true);
+    const auto tiny = verifyMesh(box, mesh, 5e-7);
+    EXPECT_FALSE(tiny.pass);
+    EXPECT_EQ(tiny.facesUnmeasured.size(), 6u);
+    ASSERT_FALSE(tiny.faces.empty());
+    EXPECT_NE(tiny.faces.front().problem.find("too small"), std::string::npos)
+        << tiny.faces.front().problem;
+    // the same planar mesh at a measurable tolerance passes
+    EXPECT_TRUE(verifyMesh(box, mesh, 1e-5).pass);
+}
