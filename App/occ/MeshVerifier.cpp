@@ -5,11 +5,14 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepExtrema_ExtPC.hxx>
 #include <BRepExtrema_ExtPF.hxx>
 #include <BRepGProp.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -17,6 +20,7 @@
 #include <BVH_Tools.hxx>
 #include <BVH_Triangulation.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_Surface.hxx>
@@ -25,6 +29,7 @@
 #include <ShapeAnalysis_Surface.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -431,6 +436,74 @@ private:
     bool uPeriodic_ = false, vPeriodic_ = false;
 };
 
+// A reference for a face that BRepMesh leaves empty (trj7_b1-ec-214.stp's face 311, a B-spline
+// face whose wire OpenCASCADE finds invalid): the surface on an n x n grid over the face's
+// (u, v) box, n doubled from 32 until every cell's centre is within `deflection` of the mean
+// of its corners (at most 512), each cell kept as two triangles where none of its corners
+// classifies outside the face; and points along every edge, a step of the box's diagonal over
+// 4n in (u, v) at most, for the cover near the boundary, which the kept cells reach to within
+// one cell. Its points lie on the exact face as BRepMesh's do: interior ones on the surface,
+// the others on the edges.
+ReferenceMesh gridReferenceOf(const TopoDS_Face& face, double deflection) {
+    ReferenceMesh result;
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    if (!(u1 > u0) || !(v1 > v0) || !std::isfinite(u1 - u0) || !std::isfinite(v1 - v0))
+        return result;
+    const BRepAdaptor_Surface surface(face);
+    int n = 32;
+    for (;; n *= 2) {
+        double worst = 0;
+        for (int i = 0; i < n && worst <= deflection; ++i)
+            for (int j = 0; j < n; ++j) {
+                const double ua = u0 + (u1 - u0) * i / n, ub = u0 + (u1 - u0) * (i + 1) / n;
+                const double va = v0 + (v1 - v0) * j / n, vb = v0 + (v1 - v0) * (j + 1) / n;
+                const gp_XYZ mean =
+                    0.25 * (surface.Value(ua, va).XYZ() + surface.Value(ub, va).XYZ() +
+                            surface.Value(ua, vb).XYZ() + surface.Value(ub, vb).XYZ());
+                worst = std::max(
+                    worst,
+                    (surface.Value(0.5 * (ua + ub), 0.5 * (va + vb)).XYZ() - mean).Modulus());
+            }
+        if (worst <= deflection || n >= 512) break;
+    }
+    BRepTopAdaptor_FClass2d classifier(face, Precision::Confusion());
+    std::vector<int> index((n + 1) * (n + 1), -1);
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const gp_Pnt2d uv(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n);
+            if (classifier.Perform(uv) == TopAbs_OUT) continue;
+            index[i * (n + 1) + j] = static_cast<int>(result.points.size());
+            result.points.push_back(fromOcc(surface.Value(uv.X(), uv.Y())));
+            result.parameters.push_back(uv);
+        }
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const int a = index[i * (n + 1) + j], b = index[(i + 1) * (n + 1) + j];
+            const int c = index[(i + 1) * (n + 1) + j + 1], d = index[i * (n + 1) + j + 1];
+            if (a < 0 || b < 0 || c < 0 || d < 0) continue;
+            result.triangles.push_back({a, b, c});
+            result.triangles.push_back({a, c, d});
+        }
+    if (result.triangles.empty()) return result;
+    const double step = std::hypot(u1 - u0, v1 - v0) / (4.0 * n);
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+        if (BRep_Tool::Degenerated(edge) || !BRep_Tool::IsGeometric(edge)) continue;
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        if (pcurve.IsNull() || !(last > first)) continue;
+        const double length = pcurve->Value(first).Distance(pcurve->Value(0.5 * (first + last))) +
+                              pcurve->Value(0.5 * (first + last)).Distance(pcurve->Value(last));
+        const int count = std::clamp(static_cast<int>(std::ceil(4 * length / step)), 16, 4096);
+        const BRepAdaptor_Curve curve(edge);
+        for (int k = 0; k <= count; ++k)
+            result.points.push_back(fromOcc(curve.Value(first + (last - first) * k / count)));
+    }
+    result.nearBorder = trianglesNearBorder(result.triangles, result.points.size());
+    return result;
+}
+
 double largestEdgeTolerance(const TopoDS_Face& face) {
     TopTools_IndexedMapOfShape edges;
     TopExp::MapShapes(face, TopAbs_EDGE, edges);
@@ -478,10 +551,13 @@ public:
                 " above OpenCASCADE's confusion distance (1e-7)";
             return result;
         }
-        const ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_);
+        ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_);
+        if (reference.triangles.empty()) reference = gridReferenceOf(face_, referenceDeflection_);
         if (reference.triangles.empty()) {
             result.measured = false;
-            result.problem = "OpenCASCADE cannot mesh the face for reference";
+            result.problem =
+                "neither OpenCASCADE's mesh nor a grid on the surface covers the "
+                "face, for reference";
             return result;
         }
         result.dev = measureDeviation(reference, result.edgeTolerance);

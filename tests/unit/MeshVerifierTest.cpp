@@ -9,8 +9,11 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom_Surface.hxx>
 #include <Poly_Triangulation.hxx>
+#include <Precision.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -335,4 +338,64 @@ TEST(MeshVerifier, ToleranceTooSmallToMeasureDoesNotPass) {
         << tiny.faces.front().problem;
     // the same planar mesh at a measurable tolerance passes
     EXPECT_TRUE(verifyMesh(box, mesh, 1e-5).pass);
+}
+
+// trj7_b1-ec-214.stp's face 311 is one that BRepMesh leaves empty (FreeCAD shows nothing
+// there; meshjudge skips it): the verifier measures it against a grid on its surface instead,
+// and a mesh with that face moved off by twice the tolerance fails there.
+TEST(MeshVerifier, FaceThatBRepMeshLeavesEmptyIsMeasuredOnAGrid) {
+    const std::filesystem::path path =
+        std::filesystem::path(NURBSLOD_CORPUS_DIR) / "trj7_b1-ec-214.stp";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
+    const TopoDS_Shape shape = nurbslod::occ::readShape(path.string());
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape, TopAbs_FACE, faces);
+    const TopoDS_Face face = TopoDS::Face(faces(311));
+    ASSERT_TRUE(brepMeshOf(face, 0.01, false).triangles.empty());  // BRepMesh gives nothing
+
+    // the face alone, meshed on a fine grid of its own surface, the cells with a corner
+    // outside the face left out
+    const double tolerance = 0.3;  // about trj7's at relative 1e-3
+    Mesh mesh;
+    {
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        const int n = 120;
+        BRepTopAdaptor_FClass2d classifier(face, Precision::Confusion());
+        auto inside = [&](int i, int j) {
+            return classifier.Perform(gp_Pnt2d(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n)) !=
+                   TopAbs_OUT;
+        };
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+                const gp_Pnt p = surface->Value(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n);
+                mesh.positions.push_back(Point3(p.X(), p.Y(), p.Z()));
+            }
+        for (std::uint32_t i = 0; i < n; ++i)
+            for (std::uint32_t j = 0; j < n; ++j) {
+                if (!inside(i, j) || !inside(i + 1, j) || !inside(i, j + 1) ||
+                    !inside(i + 1, j + 1))
+                    continue;
+                const std::uint32_t a = i * (n + 1) + j, b = a + n + 1;
+                mesh.triangles.push_back({a, b, b + 1});
+                mesh.triangles.push_back({a, b + 1, a + 1});
+            }
+        mesh.triangleFaces.assign(mesh.triangles.size(), 311);
+    }
+    const auto report = verifyMesh(shape, mesh, tolerance);
+    ASSERT_EQ(report.faces.size(), 1u);
+    EXPECT_TRUE(report.faces.front().measured) << report.faces.front().problem;
+    EXPECT_TRUE(report.facesUnmeasured.empty());
+    EXPECT_LT(report.faces.front().dev, 0.5 * tolerance);  // chords of 120 x 120 cells
+    EXPECT_LT(report.faces.front().cover, 0.5 * tolerance);  // and the strip they leave
+
+    // the same mesh moved off along z by twice the tolerance
+    for (Point3& p : mesh.positions) p.z() += 2 * tolerance;
+    const auto moved = verifyMesh(shape, mesh, tolerance);
+    ASSERT_EQ(moved.faces.size(), 1u);
+    EXPECT_TRUE(moved.faces.front().measured);
+    EXPECT_GT(moved.faces.front().dev, tolerance);
+    EXPECT_GT(moved.faces.front().cover, tolerance);
+    EXPECT_FALSE(moved.pass);
 }
