@@ -539,14 +539,10 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
     frame_->v0 = v0;
     frame_->scaleU = static_cast<double>(kScale) / (u1 - u0);
     frame_->scaleV = static_cast<double>(kScale) / (v1 - v0);
-    for (double b : patches_.breakpointsU()) {
-        const cInt x = frame_->toInteger({b, v0}).X;
-        if (x > 0 && x < kScale) frame_->breaksX.push_back(x);
-    }
-    for (double b : patches_.breakpointsV()) {
-        const cInt y = frame_->toInteger({u0, b}).Y;
-        if (y > 0 && y < kScale) frame_->breaksY.push_back(y);
-    }
+    for (const std::int64_t x : spanBordersInFrame(u0, frame_->scaleU, patches_.breakpointsU()))
+        frame_->breaksX.push_back(static_cast<cInt>(x));
+    for (const std::int64_t y : spanBordersInFrame(v0, frame_->scaleV, patches_.breakpointsV()))
+        frame_->breaksY.push_back(static_cast<cInt>(y));
     if (choices_.evenColumns) {
         const KdTreeGrid own[2] = {KdTreeGrid(u0, u1, patches_.breakpointsU()),
                                    KdTreeGrid(v0, v1, patches_.breakpointsV())};

@@ -5,15 +5,24 @@
 
 namespace nurbslod {
 
-KdTreeGrid::KdTreeGrid(double low, double high, const std::vector<double>& breakpoints)
-    : low_(low), scale_(static_cast<double>(kKdTreeFrameScale) / (high - low)) {
-    // as FaceTessellator::setFrame rounds them
-    for (double b : breakpoints) {
-        const std::int64_t x = stepOf(b);
-        if (x > 0 && x < kKdTreeFrameScale) breaks_.push_back(x);
+std::vector<std::int64_t> spanBordersInFrame(double low, double scale,
+                                             const std::vector<double>& breakpoints) {
+    std::vector<std::int64_t> borders;
+    for (std::size_t k = 0; k < breakpoints.size(); ++k) {
+        const std::int64_t x = std::llround((breakpoints[k] - low) * scale);
+        if (!(x > 0 && x < kKdTreeFrameScale)) continue;
+        if (k == 0 && x <= kFramePastDomain) continue;
+        if (k + 1 == breakpoints.size() && x >= kKdTreeFrameScale - kFramePastDomain) continue;
+        borders.push_back(x);
     }
-    std::sort(breaks_.begin(), breaks_.end());
+    std::sort(borders.begin(), borders.end());
+    return borders;
 }
+
+KdTreeGrid::KdTreeGrid(double low, double high, const std::vector<double>& breakpoints)
+    : low_(low),
+      scale_(static_cast<double>(kKdTreeFrameScale) / (high - low)),
+      breaks_(spanBordersInFrame(low_, scale_, breakpoints)) {}
 
 std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
     if (c0 > c1) std::swap(c0, c1);

@@ -12,6 +12,22 @@ namespace nurbslod {
 // its fast 64-bit range, and 1e-9 of a face is far below any tolerance a user asks for.
 inline constexpr std::int64_t kKdTreeFrameScale = std::int64_t(1) << 30;
 
+// The Bezier span borders that a face's kd-tree cuts on first, in frame steps, sorted: the
+// breakpoints that round strictly inside the frame, whose step 0 is at `low` and which has
+// `scale` steps per unit of the parameter. The surface's own ends (its first and last
+// breakpoints) lie inside the frame where a trimming curve runs past the surface's domain;
+// they count only where it runs past by more than kFramePastDomain steps. A pcurve that a
+// conversion left a hair past its surface's end (1e-8 of the domain on an offset surface
+// made into a NURBS) would otherwise cut a column that thin along the face's border, whose
+// cells fan between the border's points and their own; the weld then joins each point to
+// its neighbour across the column and leaves a pair of triangles on the same three points,
+// one each way round. Without that border, the last span's cell reaches past the domain by
+// at most 2^-20 of the frame, and its surface piece (clamped to the span) is stretched over
+// it by no more.
+inline constexpr std::int64_t kFramePastDomain = kKdTreeFrameScale >> 20;
+std::vector<std::int64_t> spanBordersInFrame(double low, double scale,
+                                             const std::vector<double>& breakpoints);
+
 // The lines along one parameter axis on which a face's kd-tree can cut, in FaceTessellator's
 // integer frame over [low, high] (the boundary's box): the Bezier span borders, which it cuts
 // first, and the halvings of each span, which it cuts where a cell's bound says "split in the
