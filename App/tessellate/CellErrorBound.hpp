@@ -120,9 +120,12 @@ struct CellErrorBound {
 // for `trimmedCell` is above `target` but within twice of it, E is subdivided at its middle
 // (de Casteljau) and the bound taken over the pieces' control points, which converges to E's
 // true range, unless a surface point already shows that no subdivision can bring it under
-// `target`.
+// `target`. A cell bounded for corners on its sides (not `trimmedCell`, `byDistance`) whose
+// bound is still above `target`, within 8 times, is bounded again under the even-speed
+// parameter (BezierReparametrization), the smaller kept.
 // Approximate: the control points replaced by surface points at the control points' parameters
-// (paper section 5.2); `target` is not used.
+// (paper section 5.2) and between them; where that is above `target`, the same samples under
+// the even-speed parameter, the smaller kept.
 // With `byDistance` false, planarTwist stays infinite: the bounds hold at equal parameters.
 // `pieceFraction`: CellErrorBound::pieceFraction, for trimmed().
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
@@ -137,10 +140,12 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
 // weight. For equal weights: m max |P_k+1,j - P_kj|. The same along t.
 CellErrorBound::Speed parameterSpeed(const BezierPatch& patch);
 
-// |S - B| at the cell's centre, S the patch and B the bilinear interpolant of its corners: a
-// lower bound of every measure in mode Guaranteed (E = S - B is 0 at the corners, which lie on
-// the sides, so spreadToEdges and spread are at least |E| anywhere). A cell above its target
-// here is split whatever its bound, which the kd-tree then does not compute.
+// |S - B| at the cell's centre, S the patch and B the bilinear interpolant of its corners, or
+// less, |S(alpha(1/2), beta(1/2)) - B(1/2, 1/2)| under the even-speed parameter that the bound
+// for corners on the sides also takes (evenSpeed): a lower bound of every measure in mode
+// Guaranteed (E = S - B is 0 at the corners, which lie on the sides, so spreadToEdges and
+// spread are at least |E| anywhere, and the same for E'). A cell above its target here is split
+// whatever its bound, which the kd-tree then does not compute.
 double centreDeviation(const BezierPatch& patch);
 
 // Where cellErrorBound in mode Guaranteed would split the cell (splitDirection, splitAt).

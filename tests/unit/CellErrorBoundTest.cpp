@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "geometry/BezierReparametrization.hpp"
 #include "geometry/SegmentDistance.hpp"
 #include "tessellate/CellErrorBound.hpp"
 
@@ -509,11 +510,15 @@ TEST(CellErrorBound, CentreDeviationIsBelowEveryMeasureAndTheSplitIsTheBounds) {
                 for (int trial = 0; trial < 6; ++trial) {
                     const BezierPatch patch = randomPatch(random, degreeU, degreeV, noise);
                     const double centre = centreDeviation(patch);
+                    const Point3 bilinearCentre =
+                        0.25 * (patch.pole3(0, 0) + patch.pole3(degreeU, 0) +
+                                patch.pole3(0, degreeV) + patch.pole3(degreeU, degreeV));
+                    const EvenSpeed even = evenSpeed(patch);
                     EXPECT_NEAR(centre,
-                                (patch.point(0.5, 0.5) -
-                                 0.25 * (patch.pole3(0, 0) + patch.pole3(degreeU, 0) +
-                                         patch.pole3(0, degreeV) + patch.pole3(degreeU, degreeV)))
-                                    .norm(),
+                                std::min((patch.point(0.5, 0.5) - bilinearCentre).norm(),
+                                         (patch.point(0.5 + 0.25 * even.a, 0.5 + 0.25 * even.b) -
+                                          bilinearCentre)
+                                             .norm()),
                                 1e-12);
                     const CellSplit split = preferredSplit(patch);
                     for (bool trimmedCell : {false, true})
@@ -532,6 +537,93 @@ TEST(CellErrorBound, CentreDeviationIsBelowEveryMeasureAndTheSplitIsTheBounds) {
                             }
                 }
     EXPECT_EQ(checked, 4 * 4 * 3 * 6 * 2 * 4 * 4);
+}
+
+// Under the even-speed parameter the bound for corners on the sides is a bound on distances,
+// not at equal parameters: checked as distances, both ways, on patches whose parameter runs
+// unevenly (poles crowded to one end, as uneven knots leave them). Mesh to surface: each
+// triangle point's distance to a fine triangulation of the patch, less that triangulation's
+// own bound, cannot pass the true distance. Surface to mesh: exact, to the triangles.
+TEST(CellErrorBound, EvenSpeedBoundIsNeverBelowAMeasuredDistance) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> jitter(-0.03, 0.03), weight(0.5, 2.0);
+    constexpr int kFine = 32;
+    int tighter = 0, checked = 0;
+    for (int degreeU : {2, 3, 5})
+        for (int degreeV : {1, 2, 3})
+            for (int trial = 0; trial < 4; ++trial) {
+                BezierPatch patch(degreeU, degreeV);
+                const double crowd = 1.0 + trial;  // poles at (i / m)^crowd along u
+                for (int i = 0; i <= degreeU; ++i)
+                    for (int j = 0; j <= degreeV; ++j) {
+                        const double s = std::pow(double(i) / degreeU, crowd);
+                        const double t = std::pow(double(j) / degreeV, 2 - 0.25 * trial);
+                        const Point3 p(s + jitter(random), t + jitter(random),
+                                       0.25 * std::sin(3 * s) * std::cos(2 * t) + jitter(random));
+                        const double w = trial % 2 ? weight(random) : 1.0;
+                        patch.pole(i, j) = HomogeneousPoint3(w * p.x(), w * p.y(), w * p.z(), w);
+                    }
+                const CellErrorBound coarse = cellErrorBound(patch, ErrorMode::Guaranteed, 0);
+                // the fine triangulation and how far it may be from the patch
+                std::vector<std::array<Point3, 3>> fine;
+                double fineBound = 0;
+                for (int a = 0; a < kFine; ++a)
+                    for (int b = 0; b < kFine; ++b) {
+                        const double s0 = double(a) / kFine, s1 = double(a + 1) / kFine;
+                        const double t0 = double(b) / kFine, t1 = double(b + 1) / kFine;
+                        const BezierPatch piece = patch.restricted(s0, s1, t0, t1);
+                        fineBound = std::max(
+                            fineBound, cellErrorBound(piece, ErrorMode::Guaranteed, 0, false, false)
+                                           .untrimmed());
+                        const Point3 p00 = patch.point(s0, t0), p10 = patch.point(s1, t0);
+                        const Point3 p01 = patch.point(s0, t1), p11 = patch.point(s1, t1);
+                        fine.push_back({p00, p10, p11});
+                        fine.push_back({p00, p11, p01});
+                    }
+                auto toFine = [&](const Point3& q) {
+                    double d = std::numeric_limits<double>::infinity();
+                    for (const auto& t : fine)
+                        d = std::min(d, distanceToTriangle(q, t[0], t[1], t[2]));
+                    return d;
+                };
+                for (double fraction : {0.9, 0.6, 0.4}) {
+                    const double target = fraction * coarse.untrimmed();
+                    const CellErrorBound bound =
+                        cellErrorBound(patch, ErrorMode::Guaranteed, target, false, true);
+                    EXPECT_LE(bound.untrimmed(), coarse.untrimmed() * (1 + 1e-12));
+                    tighter += bound.spreadToEdges < 0.95 * coarse.spreadToEdges;
+                    // the cell's two triangles and two with corners on the sides
+                    std::vector<std::array<Parameter, 3>> triangles = {
+                        {Parameter{0, 0}, Parameter{1, 0}, Parameter{1, 1}},
+                        {Parameter{0, 0}, Parameter{1, 1}, Parameter{0, 1}}};
+                    for (int k = 0; k < 2; ++k)
+                        triangles.push_back({onBorder(random), onBorder(random), onBorder(random)});
+                    for (const auto& t : triangles) {
+                        const Point3 a = patch.point(t[0][0], t[0][1]);
+                        const Point3 b = patch.point(t[1][0], t[1][1]);
+                        const Point3 c = patch.point(t[2][0], t[2][1]);
+                        for (int i = 0; i <= 6; ++i)
+                            for (int j = 0; i + j <= 6; ++j) {
+                                const double la = i / 6.0, lb = j / 6.0, lc = 1 - la - lb;
+                                EXPECT_LE(toFine(la * a + lb * b + lc * c) - fineBound,
+                                          bound.untrimmed() * (1 + 1e-9) + 1e-12);
+                            }
+                    }
+                    // every surface point is within the bound of the cell's two triangles
+                    const Point3 c00 = patch.pole3(0, 0), c10 = patch.pole3(degreeU, 0);
+                    const Point3 c01 = patch.pole3(0, degreeV), c11 = patch.pole3(degreeU, degreeV);
+                    for (int i = 0; i <= 16; ++i)
+                        for (int j = 0; j <= 16; ++j) {
+                            const Point3 q = patch.point(i / 16.0, j / 16.0);
+                            const double d = std::min(distanceToTriangle(q, c00, c10, c11),
+                                                      distanceToTriangle(q, c00, c11, c01));
+                            EXPECT_LE(d, bound.untrimmed() * (1 + 1e-9) + 1e-12);
+                        }
+                    ++checked;
+                }
+            }
+    EXPECT_EQ(checked, 3 * 3 * 4 * 3);
+    EXPECT_GT(tighter, checked / 4);  // the even speed does take most of them in
 }
 
 }  // namespace nurbslod
