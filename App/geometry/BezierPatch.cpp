@@ -117,26 +117,36 @@ void bernstein(int degree, double s, double* values) {
 }  // namespace
 
 std::vector<Point3> BezierPatch::gridPoints(int segmentsU, int segmentsV) const {
+    std::vector<double> us(static_cast<size_t>(segmentsU + 1)),
+        vs(static_cast<size_t>(segmentsV + 1));
+    for (int i = 0; i <= segmentsU; ++i)
+        us[i] = segmentsU > 0 ? static_cast<double>(i) / segmentsU : 0.0;
+    for (int j = 0; j <= segmentsV; ++j)
+        vs[j] = segmentsV > 0 ? static_cast<double>(j) / segmentsV : 0.0;
+    return gridPointsAt(us, vs);
+}
+
+std::vector<Point3> BezierPatch::gridPointsAt(const std::vector<double>& us,
+                                              const std::vector<double>& vs) const {
     const int m = degreeU_, n = degreeV_;
-    std::vector<double> basisV(static_cast<size_t>((segmentsV + 1) * (n + 1)));
-    for (int j = 0; j <= segmentsV; ++j)
-        bernstein(n, segmentsV > 0 ? static_cast<double>(j) / segmentsV : 0.0,
-                  &basisV[j * (n + 1)]);
+    const int countU = static_cast<int>(us.size()), countV = static_cast<int>(vs.size());
+    std::vector<double> basisV(static_cast<size_t>(countV * (n + 1)));
+    for (int j = 0; j < countV; ++j) bernstein(n, vs[j], &basisV[j * (n + 1)]);
     // rows[j * (m + 1) + i] = sum over l of B_l(t_j) P_il: the patch's u-curve at t_j
-    std::vector<HomogeneousPoint3> rows(static_cast<size_t>((segmentsV + 1) * (m + 1)),
+    std::vector<HomogeneousPoint3> rows(static_cast<size_t>(countV * (m + 1)),
                                         HomogeneousPoint3::Zero());
-    for (int j = 0; j <= segmentsV; ++j)
+    for (int j = 0; j < countV; ++j)
         for (int i = 0; i <= m; ++i)
             for (int l = 0; l <= n; ++l)
                 rows[j * (m + 1) + i] += basisV[j * (n + 1) + l] * pole(i, l);
-    std::vector<Point3> points(static_cast<size_t>((segmentsU + 1) * (segmentsV + 1)));
+    std::vector<Point3> points(static_cast<size_t>(countU * countV));
     std::vector<double> basisU(static_cast<size_t>(m + 1));
-    for (int i = 0; i <= segmentsU; ++i) {
-        bernstein(m, segmentsU > 0 ? static_cast<double>(i) / segmentsU : 0.0, basisU.data());
-        for (int j = 0; j <= segmentsV; ++j) {
+    for (int i = 0; i < countU; ++i) {
+        bernstein(m, us[i], basisU.data());
+        for (int j = 0; j < countV; ++j) {
             HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
             for (int k = 0; k <= m; ++k) sum += basisU[k] * rows[j * (m + 1) + k];
-            points[i * (segmentsV + 1) + j] = projectHomogeneous(sum);
+            points[i * countV + j] = projectHomogeneous(sum);
         }
     }
     return points;

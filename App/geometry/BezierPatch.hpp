@@ -38,6 +38,9 @@ public:
     // k^2 (degreeU + 1) + k (degreeU + 1)(degreeV + 1) products instead of de Casteljau's
     // k^2 (degreeU + 1) degreeV^2 / 2 per point.
     std::vector<Point3> gridPoints(int segmentsU, int segmentsV) const;
+    // The same at the local parameters (us[i], vs[j]), at index i * vs.size() + j.
+    std::vector<Point3> gridPointsAt(const std::vector<double>& us,
+                                     const std::vector<double>& vs) const;
 
 private:
     int degreeU_ = 0, degreeV_ = 0;

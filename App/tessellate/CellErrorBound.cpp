@@ -352,14 +352,24 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
         if (byDistance && (even.a != 0 || even.b != 0) && 2 * m + 1 <= kMaxDegree &&
             2 * n + 1 <= kMaxDegree &&
             bound.interior + std::min(bound.twist, bound.planarTwist) > target) {
+            std::vector<double> us(static_cast<size_t>(2 * m + 1)),
+                vs(static_cast<size_t>(2 * n + 1));
+            for (int i = 0; i <= 2 * m; ++i) {
+                const double s = static_cast<double>(i) / (2 * m);
+                us[i] = s + even.a * s * (1 - s);
+            }
+            for (int j = 0; j <= 2 * n; ++j) {
+                const double t = static_cast<double>(j) / (2 * n);
+                vs[j] = t + even.b * t * (1 - t);
+            }
+            const std::vector<Point3> evenSamples = patch.gridPointsAt(us, vs);
             double evenInterior = 0;
             for (int i = 0; i <= 2 * m; ++i)
                 for (int j = 0; j <= 2 * n; ++j) {
                     const double s = static_cast<double>(i) / (2 * m);
                     const double t = static_cast<double>(j) / (2 * n);
-                    const Point3 p =
-                        patch.point(s + even.a * s * (1 - s), t + even.b * t * (1 - t));
-                    evenInterior = std::max(evenInterior, (p - bilinear(s, t)).norm());
+                    evenInterior = std::max(
+                        evenInterior, (evenSamples[i * (2 * n + 1) + j] - bilinear(s, t)).norm());
                 }
             bound.interior = std::min(bound.interior, evenInterior);
         }
