@@ -285,6 +285,12 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
         const Model model = importSource(call.source);
         TessellationOptions options = call.options;
         options.tolerance = absoluteTolerance(model, call.tolerance);
+        // The overlays interpolate per-vertex normals and curvatures across each triangle, at
+        // equal parameters, as the display's LOD does: its cells take the bound at equal
+        // parameters, not the distance bounds (flat cells, the even-speed parameter), under
+        // which a cell of a G2 joint's patch grew wide enough to kink its zebra stripes by 15
+        // degrees.
+        options.flatCellsByDistance = false;
         result = tessellateModel(model, options);
         analysis = analysisMesh(model, result.mesh);
     }
