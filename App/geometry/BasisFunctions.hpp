@@ -7,6 +7,13 @@ namespace nurbslod {
 // Largest degree the fixed-size scratch buffers of the evaluators accept.
 inline constexpr int kMaxDegree = 40;
 
+// The binomial coefficient C(n, k) as a double, by the product of (n - k + i) / i.
+inline double binomial(int n, int k) {
+    double c = 1;
+    for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
+    return c;
+}
+
 // The degree+1 non-zero B-spline basis functions at t in span `span`, written to out[0..degree]
 // (NURBS Book, algorithm A2.2, the triangular Cox-de Boor scheme without divisions by zero).
 void basisFunctions(const KnotVector& knots, int span, double t, double* out);

@@ -4,15 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/BasisFunctions.hpp"
+
 namespace nurbslod {
 
 namespace {
-
-double binomial(int n, int k) {
-    double c = 1;
-    for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-    return c;
-}
 
 // The Bernstein coefficients of the product of two polynomials given by theirs.
 std::vector<double> product(const std::vector<double>& f, const std::vector<double>& g) {

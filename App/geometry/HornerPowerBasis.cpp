@@ -7,12 +7,6 @@ namespace nurbslod {
 
 namespace {
 
-double binomial(int n, int k) {
-    double b = 1;
-    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-    return b;
-}
-
 // Bezier control points pts[0], pts[stride], ... of a degree-n curve to its Taylor
 // coefficients about the middle of the segment, c_k = f^(k)(1/2) / k! =
 // C(n, k) sum_i B^(n-k)_i(1/2) Delta^k P_i: the power basis in (t - 1/2). About 0 instead, the

@@ -10,18 +10,13 @@
 #include <mutex>
 #include <vector>
 
+#include "geometry/BasisFunctions.hpp"
 #include "geometry/BitMix.hpp"
 #include "geometry/SegmentDistance.hpp"
 
 namespace nurbslod {
 
 namespace {
-
-double binomial(int n, int k) {
-    double r = 1;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-    return r;
-}
 
 // Pseudo-inverse of the Bernstein collocation matrix at t_i = i/n (paper section 4: "a linear
 // system of equations with a nonsingular matrix", solved by SVD for stability). It depends only
