@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "geometry/BasisFunctions.hpp"
@@ -294,6 +295,15 @@ FarthestNetPoint farthestFromBilinear(const std::vector<Point3>& net, int m, int
 // drift can be most of E.
 constexpr double kWorthReparametrizing = 8.0;
 
+// The patch's even-speed parameter (evenSpeed), where it moves the parameter at all and the
+// composed patch's difference (degree 2m + 1) stays within kMaxDegree.
+std::optional<EvenSpeed> usableEvenSpeed(const BezierPatch& patch) {
+    if (2 * patch.degreeU() + 1 > kMaxDegree || 2 * patch.degreeV() + 1 > kMaxDegree) return {};
+    const EvenSpeed even = evenSpeed(patch);
+    if (even.a == 0 && even.b == 0) return {};
+    return even;
+}
+
 // Subdivision of E pays only near the target: far above it the cell is split anyway.
 constexpr double kWorthRefining = 2.0;
 // Parts per side tried: 1 (E's own net), then 2; 4 parts were measured to save under 0.1 % of
@@ -348,19 +358,18 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
         // The same samples under the even-speed parameter (as the bound below takes it): where
         // the parameter runs unevenly along the surface, the samples' drift within the surface
         // is most of their distance to the bilinear patch, and the triangles do not see it.
-        const EvenSpeed even = evenSpeed(patch);
-        if (byDistance && (even.a != 0 || even.b != 0) && 2 * m + 1 <= kMaxDegree &&
-            2 * n + 1 <= kMaxDegree &&
-            bound.interior + std::min(bound.twist, bound.planarTwist) > target) {
+        std::optional<EvenSpeed> even;
+        if (byDistance && bound.measure(mode, trimmedCell) > target &&
+            (even = usableEvenSpeed(patch))) {
             std::vector<double> us(static_cast<size_t>(2 * m + 1)),
                 vs(static_cast<size_t>(2 * n + 1));
             for (int i = 0; i <= 2 * m; ++i) {
                 const double s = static_cast<double>(i) / (2 * m);
-                us[i] = s + even.a * s * (1 - s);
+                us[i] = s + even->a * s * (1 - s);
             }
             for (int j = 0; j <= 2 * n; ++j) {
                 const double t = static_cast<double>(j) / (2 * n);
-                vs[j] = t + even.b * t * (1 - t);
+                vs[j] = t + even->b * t * (1 - t);
             }
             const std::vector<Point3> evenSamples = patch.gridPointsAt(us, vs);
             double evenInterior = 0;
@@ -411,20 +420,16 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
         // normal distance of 0.049. Only the bound at equal parameters (byDistance false) and
         // the trimmed bound (corners anywhere in the cell, its piece's box in the old
         // parameter) keep E.
-        const int m2 = 2 * m + 1, n2 = 2 * n + 1;
         if (byDistance && !trimmedCell && bound.untrimmed() > target &&
-            bound.untrimmed() <= kWorthReparametrizing * target && m2 <= kMaxDegree &&
-            n2 <= kMaxDegree) {
-            const EvenSpeed even = evenSpeed(patch);
-            if (even.a != 0 || even.b != 0) {
+            bound.untrimmed() <= kWorthReparametrizing * target)
+            if (const auto even = usableEvenSpeed(patch)) {
                 const BezierPatch evenDifference =
-                    differencePatch(reparametrized(patch, even.a, even.b), corner);
+                    differencePatch(reparametrized(patch, even->a, even->b), corner);
                 for (int pieces = 1; pieces <= kMostPieces && bound.untrimmed() > target;
                      pieces *= 2)
                     bound.spreadToEdges = std::min(
                         bound.spreadToEdges, rangeOf(evenDifference, pieces, false).spreadToEdges);
             }
-        }
     }
 
     const CellSplit split = splitOfNet(net, m, n, c00, c10, c01, c11, farthest.i, farthest.j);
@@ -478,10 +483,10 @@ double centreDeviation(const BezierPatch& patch) {
         0.25 * (patch.pole3(0, 0) + patch.pole3(m, 0) + patch.pole3(0, n) + patch.pole3(m, n));
     const double centre = (projectHomogeneous(sum) - bilinearCentre).norm();
     // under the even-speed parameter the bound's E' is S(alpha(1/2), beta(1/2)) - B there
-    const EvenSpeed even = evenSpeed(patch);
-    if (even.a == 0 && even.b == 0) return centre;
+    const auto even = usableEvenSpeed(patch);
+    if (!even) return centre;
     return std::min(
-        centre, (patch.point(0.5 + 0.25 * even.a, 0.5 + 0.25 * even.b) - bilinearCentre).norm());
+        centre, (patch.point(0.5 + 0.25 * even->a, 0.5 + 0.25 * even->b) - bilinearCentre).norm());
 }
 
 CellSplit preferredSplit(const BezierPatch& patch) {

@@ -2,22 +2,13 @@
 
 #include <random>
 
+#include "RandomBezierPatch.hpp"
 #include "geometry/BezierReparametrization.hpp"
 
 namespace nurbslod {
 namespace {
 
-BezierPatch randomRationalPatch(std::mt19937& random, int degreeU, int degreeV) {
-    std::uniform_real_distribution<double> coordinate(-1, 1), weight(0.3, 3.0);
-    BezierPatch patch(degreeU, degreeV);
-    for (int i = 0; i <= degreeU; ++i)
-        for (int j = 0; j <= degreeV; ++j) {
-            const double w = weight(random);
-            patch.pole(i, j) = HomogeneousPoint3(w * coordinate(random), w * coordinate(random),
-                                                 w * coordinate(random), w);
-        }
-    return patch;
-}
+using testing::randomRationalPatch;
 
 // The composed patch is the patch at (alpha(s), beta(t)), to rounding, and keeps its corners.
 TEST(BezierReparametrization, ComposedPatchIsThePatchAtTheNewParameter) {
