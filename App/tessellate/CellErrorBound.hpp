@@ -147,6 +147,9 @@ CellErrorBound::Speed parameterSpeed(const BezierPatch& patch);
 // spread are at least |E| anywhere, and the same for E'). A cell above its target here is split
 // whatever its bound, which the kd-tree then does not compute.
 double centreDeviation(const BezierPatch& patch);
+// centreDeviation(patch) > target, without the even-speed point where the plain centre is
+// within the target (most cells: the kd-tree asks this of every cell it bounds).
+bool centreBeyond(const BezierPatch& patch, double target);
 
 // Where cellErrorBound in mode Guaranteed would split the cell (splitDirection, splitAt).
 struct CellSplit {

@@ -754,7 +754,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
         CellSplit preferred;
         // a trimmed cell whose bound for corners on its sides would do (bandSplit)
         bool sidesWouldDo = false;
-        if (mode_ == ErrorMode::Guaranteed && centreDeviation(piece) > target) {
+        if (mode_ == ErrorMode::Guaranteed && centreBeyond(piece, target)) {
             preferred = preferredSplit(piece);
         } else {
             const CellErrorBound bound = cellErrorBound(

@@ -520,6 +520,10 @@ TEST(CellErrorBound, CentreDeviationIsBelowEveryMeasureAndTheSplitIsTheBounds) {
                                           bilinearCentre)
                                              .norm()),
                                 1e-12);
+                    // what the kd-tree asks: the same answer, with or without the even point
+                    for (double target : {0.0, 0.5 * centre, centre, 2 * centre,
+                                          (patch.point(0.5, 0.5) - bilinearCentre).norm()})
+                        EXPECT_EQ(centreBeyond(patch, target), centre > target);
                     const CellSplit split = preferredSplit(patch);
                     for (bool trimmedCell : {false, true})
                         for (double fraction : {1.0, 0.5, 0.1, 0.0})
