@@ -270,6 +270,12 @@ CellSplit splitOfNet(const std::vector<Point3>& net, int m, int n, const Point3&
     return {1, (farJ > 0 && farJ < n) ? static_cast<double>(farJ) / n : 0.5};
 }
 
+// The bilinear patch of the corners c00, c10, c01, c11 at (s, t).
+Point3 bilinearAt(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,
+                  double s, double t) {
+    return (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
+}
+
 // The net point farthest from the bilinear patch of the corners: where to split.
 struct FarthestNetPoint {
     double distance = -1;
@@ -282,9 +288,7 @@ FarthestNetPoint farthestFromBilinear(const std::vector<Point3>& net, int m, int
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) {
             const double s = static_cast<double>(i) / m, t = static_cast<double>(j) / n;
-            const Point3 bilinear =
-                (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-            const double d = (net[i * (n + 1) + j] - bilinear).norm();
+            const double d = (net[i * (n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm();
             if (d > farthest.distance) farthest = {d, i, j};
         }
     return farthest;
@@ -325,9 +329,9 @@ double largestEvenSample(const BezierPatch& patch, const EvenSpeed& even) {
         for (int j = 0; j <= 2 * n; ++j) {
             const double s = static_cast<double>(i) / (2 * m);
             const double t = static_cast<double>(j) / (2 * n);
-            const Point3 bilinear =
-                (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-            largest = std::max(largest, (samples[i * (2 * n + 1) + j] - bilinear).norm());
+            largest = std::max(
+                largest,
+                (samples[i * (2 * n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm());
         }
     return largest;
 }
@@ -345,9 +349,7 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     const int m = patch.degreeU(), n = patch.degreeV();
     const Point3 c00 = patch.pole3(0, 0), c10 = patch.pole3(m, 0);
     const Point3 c01 = patch.pole3(0, n), c11 = patch.pole3(m, n);
-    auto bilinear = [&](double s, double t) -> Point3 {
-        return (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-    };
+    auto bilinear = [&](double s, double t) { return bilinearAt(c00, c10, c01, c11, s, t); };
     CellErrorBound bound;
     bound.twist = 0.25 * (c00 - c10 - c01 + c11).norm();
     if (byDistance) bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
