@@ -6,8 +6,6 @@
 
 #include <tbb/global_control.h>
 
-#include <BRepBndLib.hxx>
-#include <Bnd_Box.hxx>
 #include <CLI/CLI.hpp>
 #include <Standard_Failure.hxx>
 #include <algorithm>
@@ -29,6 +27,7 @@
 #include "io/ObjMeshReader.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
+#include "occ/ShapeDiagonal.hpp"
 #include "occ/ShapeReader.hpp"
 #include "tessellate/ModelTessellator.hpp"
 #include "tessellate/ToleranceRequest.hpp"
@@ -123,16 +122,6 @@ double positiveNumber(const std::string& text, const std::string& option) {
 struct ToleranceArguments {
     std::string absolute, relative;  // as typed; empty when not given
 };
-
-// The same diagonal as occ::importModel's Model::boundingBoxDiagonal, so that --relative
-// means the same absolute tolerance to `tessellate` and to `verify`.
-double boundingBoxDiagonal(const TopoDS_Shape& shape) {
-    Bnd_Box box;
-    BRepBndLib::Add(shape, box);
-    if (box.IsVoid()) return 0;
-    box.SetGap(0.0);
-    return std::sqrt(box.SquareExtent());
-}
 
 double absoluteTolerance(const ToleranceArguments& arguments, double diagonal,
                          double defaultRelative) {
@@ -332,7 +321,8 @@ int runVerify(const VerifyArguments& arguments) {
     } catch (const MeshReadError& error) {
         throw BadInput(error.what());
     }
-    const double tolerance = absoluteTolerance(arguments.tolerance, boundingBoxDiagonal(shape), 0);
+    const double tolerance =
+        absoluteTolerance(arguments.tolerance, occ::boundingBoxDiagonal(shape), 0);
 
     occ::VerificationReport report;
     try {

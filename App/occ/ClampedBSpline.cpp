@@ -1,5 +1,9 @@
 #include "occ/ClampedBSpline.hpp"
 
+#include <TColStd_Array1OfReal.hxx>
+#include <algorithm>
+#include <cmath>
+
 namespace nurbslod::occ {
 
 namespace {
@@ -14,7 +18,35 @@ bool clampedV(const Geom_BSplineSurface& s) {
            s.VMultiplicity(s.NbVKnots()) == s.VDegree() + 1;
 }
 
+template <class Curve>
+Handle(Curve) movedOntoRange(const Handle(Curve) & curve, double first, double last) {
+    if (curve.IsNull()) return curve;
+    const double slack = 1e-9 * std::max({1.0, std::abs(first), std::abs(last)});
+    const double shift = curve->FirstParameter() - first;
+    if (std::abs(shift) <= slack) return curve;
+    const double periods = shift / (2 * M_PI);
+    if (curve->IsPeriodic() || std::abs(periods - std::round(periods)) * 2 * M_PI > slack ||
+        std::abs(curve->LastParameter() - shift - last) > slack)
+        return nullptr;
+    Handle(Curve) result = Handle(Curve)::DownCast(curve->Copy());
+    TColStd_Array1OfReal knots(1, result->NbKnots());
+    result->Knots(knots);
+    for (int k = knots.Lower(); k <= knots.Upper(); ++k) knots(k) -= shift;
+    result->SetKnots(knots);
+    return result;
+}
+
 }  // namespace
+
+Handle(Geom_BSplineCurve)
+    onEdgeRange(const Handle(Geom_BSplineCurve) & curve, double first, double last) {
+    return movedOntoRange(curve, first, last);
+}
+
+Handle(Geom2d_BSplineCurve)
+    onEdgeRange(const Handle(Geom2d_BSplineCurve) & curve, double first, double last) {
+    return movedOntoRange(curve, first, last);
+}
 
 Handle(Geom_BSplineSurface) clampedSurface(const Handle(Geom_BSplineSurface) & surface) {
     if (clampedU(*surface) && clampedV(*surface)) return surface;

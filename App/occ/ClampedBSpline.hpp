@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Geom2d_BSplineCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 
 namespace nurbslod::occ {
@@ -24,5 +25,17 @@ Handle(Geom_BSplineSurface) clampedSurface(const Handle(Geom_BSplineSurface) & s
 // edge's pcurve starting mid-period does), over its own bounds otherwise.
 Handle(Geom2d_BSplineCurve)
     clampedCurve(const Handle(Geom2d_BSplineCurve) & curve, double first, double last);
+
+// A curve converted from a trimmed conic over the edge's range [first, last], with its knots
+// moved back onto that range where the conversion left them a whole number of periods away:
+// OpenCASCADE's trimmed curves move a periodic basis's range into its first period
+// (ElCLib::AdjustPeriodic), so a circle trimmed to [-pi, pi] (BRepPrimAPI's torus and
+// revolutions make such edges) converts over [pi, 3 pi], and read at the edge's parameters it
+// gave one point: the face lost its boundary and its triangles without a word. Null where the
+// ranges differ otherwise (the caller's checks then take another way).
+Handle(Geom_BSplineCurve)
+    onEdgeRange(const Handle(Geom_BSplineCurve) & curve, double first, double last);
+Handle(Geom2d_BSplineCurve)
+    onEdgeRange(const Handle(Geom2d_BSplineCurve) & curve, double first, double last);
 
 }  // namespace nurbslod::occ

@@ -1,12 +1,10 @@
 #include "occ/ModelImporter.hpp"
 
-#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <Bnd_Box.hxx>
 #include <ElCLib.hxx>
 #include <Geom2dConvert.hxx>
 #include <Geom2dConvert_ApproxCurve.hxx>
@@ -49,6 +47,7 @@
 #include "occ/ClosedSurfaceUnwrapper.hpp"
 #include "occ/FaceSewing.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
+#include "occ/ShapeDiagonal.hpp"
 
 namespace nurbslod::occ {
 
@@ -112,6 +111,7 @@ Handle(Geom2d_BSplineCurve)
     Handle(Geom2d_BSplineCurve) result;
     if (auto bspline = Handle(Geom2d_BSplineCurve)::DownCast(basis)) {
         result = clampedCurve(Handle(Geom2d_BSplineCurve)::DownCast(bspline->Copy()), first, last);
+        if (const auto moved = onEdgeRange(result, first, last)) result = moved;
     } else if (basis->IsKind(STANDARD_TYPE(Geom2d_Line)) ||
                basis->IsKind(STANDARD_TYPE(Geom2d_BezierCurve))) {
         result = Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(basis, first, last));
@@ -120,7 +120,9 @@ Handle(Geom2d_BSplineCurve)
         Geom2dConvert_ApproxCurve approx(
             piece, 1e-9 * std::max(1.0, piece->Value(first).XY().Modulus()), GeomAbs_C2, 200, 9);
         if (!approx.HasResult()) throw Standard_Failure("a trimming curve could not be converted");
-        result = approx.Curve();
+        result = onEdgeRange(approx.Curve(), first, last);
+        if (result.IsNull())
+            throw Standard_Failure("a trimming curve's conversion left its parameter range");
     }
     return result;
 }
@@ -288,8 +290,10 @@ std::optional<ConicEdge> conicEdgeOf(const TopoDS_Edge& edge) {
     if (!(result.last > result.first) || result.last - result.first > 2 * M_PI + 1e-9)
         return std::nullopt;
     try {
-        result.rational = GeomConvert::CurveToBSplineCurve(
-            new Geom_TrimmedCurve(curve, result.first, result.last), Convert_TgtThetaOver2);
+        result.rational = onEdgeRange(
+            GeomConvert::CurveToBSplineCurve(
+                new Geom_TrimmedCurve(curve, result.first, result.last), Convert_TgtThetaOver2),
+            result.first, result.last);
     } catch (const Standard_Failure&) {
         return std::nullopt;
     }
@@ -318,7 +322,8 @@ Handle(Geom2d_BSplineCurve)
         try {
             Handle(Geom2d_BSplineCurve) exact = Geom2dConvert::CurveToBSplineCurve(
                 new Geom2d_TrimmedCurve(basis, edge.first, edge.last), Convert_TgtThetaOver2);
-            exact = clampedCurve(exact, edge.first, edge.last);
+            exact = onEdgeRange(clampedCurve(exact, edge.first, edge.last), edge.first, edge.last);
+            if (exact.IsNull()) throw Standard_Failure("the conic's pcurve left the edge's range");
             double worst = 0;
             for (int k = 0; k <= 32; ++k) {
                 const double s = edge.first + (edge.last - edge.first) * k / 32;
@@ -438,12 +443,7 @@ Model importModel(const TopoDS_Shape& original) {
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
-    Bnd_Box box;
-    BRepBndLib::Add(original, box);
-    if (!box.IsVoid()) {
-        box.SetGap(0.0);
-        model.boundingBoxDiagonal = std::sqrt(box.SquareExtent());
-    }
+    model.boundingBoxDiagonal = boundingBoxDiagonal(original);
 
     // Loose faces (no shared edges in the file) are sewn where their edges coincide to far
     // below any tolerance a user asks for, so that the mesh closes across them.

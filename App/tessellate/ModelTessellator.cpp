@@ -1344,6 +1344,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (auto& i : t) i = newIndex[i];
     }
 
+    // A face meshed without a failure must still have a triangle after the weld and the folds
+    // went: one that has none is listed, never silently missing (a closed edge whose pcurve
+    // read as one point gave its plane no boundary, and no word).
+    std::vector<char> hasTriangle(faceCount, 0);
+    for (const int f : mesh.triangleFaces) hasTriangle[f - 1] = 1;
+    bool added = false;
+    for (int f = 0; f < faceCount; ++f)
+        if (failure[f].empty() && !hasTriangle[f]) {
+            result.failures.push_back(
+                {f + 1, "no triangle left: its boundary encloses no area on its surface"});
+            added = true;
+        }
+    if (added)
+        std::sort(result.failures.begin(), result.failures.end(),
+                  [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
+
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
