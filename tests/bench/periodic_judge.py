@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """periodic_judge: meshjudge.py, with its exact distance also tried on every period of a face
-whose parameter range wraps round its periodic surface more than once, and its distances to
-triangles over half the tolerance taken again in double precision.
+whose parameter range wraps round its periodic surface more than once or leaves the surface's
+first period, and its distances to triangles over half the tolerance taken again in double
+precision.
 
 Why it exists: OpenCASCADE's distance from a point to a face (BRepExtrema, behind
 Part.Vertex.distToShape, which meshjudge.py uses for its exact re-check) projects the point onto
@@ -10,6 +11,9 @@ spans more than one period - bottle.brep's thread, a band on a cylinder with u f
 12.45, two turns - then has a turn the distance does not see: a point lying on the second turn
 gets its distance to the nearest edge of the face (up to half the band's width). The face's own
 Area and BRepMesh's tessellation of it do cover both turns, and the trimming loops say so.
+The same holds for a face over one period that is not the surface's first: a partial torus
+from BRepPrimAPI (FreeCAD's Part.makeTorus with angles -180, 180) has its tube angle over
+[-pi, pi]; the projection answers in [0, 2 pi), and half the tube reads about its radius off.
 
 Where the judge's exact distance exceeds a thousandth of the tolerance on such a face, the
 point's parameter is also tried one or more periods on, inside the face's range, and classified
@@ -49,14 +53,25 @@ def load_judge(path):
     return module
 
 
-def wraps_more_than_once(face):
+def periods_to_try(face):
+    """(direction, period, low, high) for each periodic direction where a projection's one
+    parameter per period may miss the face: its range wraps round more than once, or it leaves
+    the surface's own period (a torus's tube angle over [-pi, pi], as BRepPrimAPI makes the
+    tube of a partial torus, where the projection answers in [0, 2 pi))."""
     surface = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
+    su0, su1, sv0, sv1 = surface.bounds()
     spans = []
-    if surface.isUPeriodic() and u1 - u0 > surface.UPeriod() * (1 + 1e-9):
-        spans.append((0, surface.UPeriod(), u0, u1))
-    if surface.isVPeriodic() and v1 - v0 > surface.VPeriod() * (1 + 1e-9):
-        spans.append((1, surface.VPeriod(), v0, v1))
+    for direction, periodic, period, low, high, own_low, own_high in (
+            (0, surface.isUPeriodic(), surface.UPeriod() if surface.isUPeriodic() else 0,
+             u0, u1, su0, su1),
+            (1, surface.isVPeriodic(), surface.VPeriod() if surface.isVPeriodic() else 0,
+             v0, v1, sv0, sv1)):
+        if not periodic:
+            continue
+        slack = 1e-9 * period
+        if (high - low > period + slack or low < own_low - slack or high > own_high + slack):
+            spans.append((direction, period, low, high))
     return spans
 
 
@@ -127,7 +142,7 @@ def main():
             return distance
         key = face.hashCode()
         if key not in cache:
-            spans = wraps_more_than_once(face)
+            spans = periods_to_try(face)
             cache[key] = (spans, loop_segments(face) if spans else None)
         spans, segments = cache[key]
         if not spans:
@@ -205,7 +220,7 @@ def main():
         for number, face in enumerate(faces, 1):
             if face.hashCode() in changed:
                 was, now = changed[face.hashCode()]
-                print("Face%d wraps its surface more than once: largest exact distance %.4g "
+                print("Face%d spans periods the projection misses: largest exact distance %.4g "
                       "as judged, %.4g on every period" % (number, was, now))
         for number in sorted(k for k in rechecked if k is not None):
             was, now = rechecked[number]

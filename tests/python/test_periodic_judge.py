@@ -72,7 +72,7 @@ class PeriodicJudge(unittest.TestCase):
         run, report = self.judge(WRAPPER, model, mesh, tolerance)
         self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
         self.assertLessEqual(report["max_dev"], tolerance)
-        self.assertIn("Face1 wraps its surface more than once", run.stdout)
+        self.assertIn("Face1 spans periods the projection misses", run.stdout)
 
     def test_a_face_that_wraps_once_is_judged_as_before(self):
         tolerance = 1e-4 * self.bottle.BoundBox.DiagonalLength
