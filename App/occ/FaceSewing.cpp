@@ -33,7 +33,7 @@ SewnShape sewFaces(const TopoDS_Shape& shape, double tolerance) {
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     SewnShape input{shape, {}};
     for (int k = 1; k <= faces.Extent(); ++k) input.faces.push_back(TopoDS::Face(faces(k)));
-    if (!(tolerance > 0) || faces.Extent() < 2 || !hasFreeEdges(shape)) return input;
+    if (!(tolerance > 0) || faces.IsEmpty() || !hasFreeEdges(shape)) return input;
     try {
         BRepBuilderAPI_Sewing sewing(tolerance);
         sewing.Add(shape);

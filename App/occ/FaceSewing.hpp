@@ -10,7 +10,9 @@ namespace nurbslod::occ {
 // IGES and some STEP files are) each own a copy of the edges they have in common, so nothing
 // tells the tessellator that the two copies are one edge and the mesh opens along it.
 // OpenCASCADE's sewing (BRepBuilderAPI_Sewing) finds the copies that coincide within
-// `tolerance` and makes them one shared edge.
+// `tolerance` and makes them one shared edge. A single face is sewn too: IGES keeps no seam,
+// so a whole torus or sphere read from it is one face whose seam is two separate edges (a torus
+// at relative 1e-3 had 394 open edges along them, none once sewn).
 struct SewnShape {
     TopoDS_Shape shape;              // the sewn shape (the input when nothing was sewn)
     std::vector<TopoDS_Face> faces;  // in the input's face order (TopExp::MapShapes)
