@@ -323,15 +323,16 @@ Handle(Geom2d_BSplineCurve)
             Handle(Geom2d_BSplineCurve) exact = Geom2dConvert::CurveToBSplineCurve(
                 new Geom2d_TrimmedCurve(basis, edge.first, edge.last), Convert_TgtThetaOver2);
             exact = onEdgeRange(clampedCurve(exact, edge.first, edge.last), edge.first, edge.last);
-            if (exact.IsNull()) throw Standard_Failure("the conic's pcurve left the edge's range");
-            double worst = 0;
-            for (int k = 0; k <= 32; ++k) {
-                const double s = edge.first + (edge.last - edge.first) * k / 32;
-                const gp_Pnt2d uv = exact->Value(s);
-                worst = std::max(worst,
-                                 surface->Value(uv.X(), uv.Y()).Distance(edge.rational->Value(s)));
+            if (!exact.IsNull()) {
+                double worst = 0;
+                for (int k = 0; k <= 32; ++k) {
+                    const double s = edge.first + (edge.last - edge.first) * k / 32;
+                    const gp_Pnt2d uv = exact->Value(s);
+                    worst = std::max(
+                        worst, surface->Value(uv.X(), uv.Y()).Distance(edge.rational->Value(s)));
+                }
+                if (worst <= accuracy) return exact;
             }
-            if (worst <= accuracy) return exact;
         } catch (const Standard_Failure&) {
         }
     }

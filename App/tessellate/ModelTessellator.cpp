@@ -1349,16 +1349,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // read as one point gave its plane no boundary, and no word).
     std::vector<char> hasTriangle(faceCount, 0);
     for (const int f : mesh.triangleFaces) hasTriangle[f - 1] = 1;
-    bool added = false;
     for (int f = 0; f < faceCount; ++f)
-        if (failure[f].empty() && !hasTriangle[f]) {
+        if (failure[f].empty() && !hasTriangle[f])
             result.failures.push_back(
                 {f + 1, "no triangle left: its boundary encloses no area on its surface"});
-            added = true;
-        }
-    if (added)
-        std::sort(result.failures.begin(), result.failures.end(),
-                  [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
+    std::sort(result.failures.begin(), result.failures.end(),
+              [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
