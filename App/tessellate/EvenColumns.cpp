@@ -40,6 +40,40 @@ bool regionIsTheBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>&
     return true;
 }
 
+double regionShareOfBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids) {
+    double width[2];
+    for (int axis = 0; axis < 2; ++axis)
+        width[axis] = grids[axis].parameterAt(kKdTreeFrameScale) - grids[axis].parameterAt(0);
+    // each loop's area by the shoelace sum over its curves sampled evenly, in the loop's order;
+    // the orientation of loops is not trusted (the tessellator fills by the even-odd rule), so
+    // the largest loop is taken as the outer one and the others as holes in it
+    constexpr int kSamples = 16;
+    std::vector<double> areas;
+    for (const auto& loop : face.loops) {
+        double twiceArea = 0;
+        for (const auto& curve : loop.curves) {
+            const CurveOnSurface use(face.surface, curve.pcurve, curve.first, curve.last);
+            auto at = [&](int k) {
+                const double s = double(k) / kSamples;
+                return use.uv(curve.reversed ? 1 - s : s);
+            };
+            Point2 previous = at(0);
+            for (int k = 1; k <= kSamples; ++k) {
+                const Point2 next = at(k);
+                twiceArea += previous.x() * next.y() - next.x() * previous.y();
+                previous = next;
+            }
+        }
+        areas.push_back(0.5 * std::abs(twiceArea));
+    }
+    if (areas.empty()) return 0;
+    std::sort(areas.begin(), areas.end());
+    double region = areas.back();
+    for (std::size_t k = 0; k + 1 < areas.size(); ++k) region -= areas[k];
+    const double box = width[0] * width[1];
+    return box > 0 ? std::clamp(region / box, 0.0, 1.0) : 0.0;
+}
+
 std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids,
                                  int axis, double target, ErrorMode mode,
                                  bool flatCellsByDistance) {

@@ -445,8 +445,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     forEachIndex(0, faceCount, [&](int f) {
         if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
     });
-    // Even columns (evenColumnNeeds) where a face's region is its whole frame box and its
-    // cells bound as filled to their sides (no free edge). An edge that runs along an axis of
+    // Even columns (evenColumnNeeds) where a face's region is its whole frame box, or most of
+    // it (kEvenColumnsRegionShare), and its cells bound as filled to their sides (no free
+    // edge). An edge that runs along an axis of
     // such a face and is straight in another face's (u, v) is cut by that face's kd-tree too:
     // the two axes take the same columns, the largest of their needs, on the same frame, or
     // neither takes any (bottle.brep's cylinders alone, whose circles its tori share and cut on
@@ -468,7 +469,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     forEachIndex(0, faceCount, [&](int f) {
         const auto grids = faceLines[f].both();
         columnCandidate[f] = options.evenColumns && failure[f].empty() && grids &&
-                             !hasFreeEdge(f) && regionIsTheBox(model.faces[f], *grids);
+                             !hasFreeEdge(f) &&
+                             (regionIsTheBox(model.faces[f], *grids) ||
+                              regionShareOfBox(model.faces[f], *grids) >= kEvenColumnsRegionShare);
     });
     for (int f = 0; f < faceCount; ++f)
         for (int axis = 0; axis < 2; ++axis) columnsRuledOut[2 * f + axis] = !columnCandidate[f];
@@ -481,6 +484,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         for (const auto& use : uses[e]) {
             if (!columnCandidate[use.face]) continue;
             const CurveOnSurface curve = curveOnSurface(use);
+            // a curve bent in this face's (u, v) crosses its kd-tree lines wherever they fall,
+            // even columns or halvings: nothing to tie (a plane's hole around a cylinder)
+            if (!curve.straightInParameterPlane()) continue;
             const auto along = axesAlong(curve);
             for (const auto& other : uses[e]) {
                 if (other.face == use.face && other.loop == use.loop && other.curve == use.curve)
