@@ -111,6 +111,7 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         options.splitThroughBoundaryPoints = false;
         options.freeEdgesTakeSurfaceShare = false;  // the face alone: its edges are not free
         options.flatCellsByDistance = false;        // normals are measured at equal parameters
+        options.evenColumnsCutAcross = false;       // its normal bound was measured on halvings
         TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;

@@ -289,8 +289,10 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
         // equal parameters, as the display's LOD does: its cells take the bound at equal
         // parameters, not the distance bounds (flat cells, the even-speed parameter), under
         // which a cell of a G2 joint's patch grew wide enough to kink its zebra stripes by 15
-        // degrees.
+        // degrees. For the same reason they keep the halvings where columns are cut across
+        // (the G2 joint's zebra stripes kinked by 11.7 degrees with even columns there).
         options.flatCellsByDistance = false;
+        options.evenColumnsCutAcross = false;
         result = tessellateModel(model, options);
         analysis = analysisMesh(model, result.mesh);
     }

@@ -542,9 +542,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
-                needs[k] = evenColumnNeeds(model.faces[f], *faceLines[f].both(), nodes[k] % 2,
-                                           faceBudgets[f].surface, options.mode,
-                                           options.flatCellsByDistance);
+                needs[k] = evenColumnNeeds(
+                    model.faces[f], *faceLines[f].both(), nodes[k] % 2, faceBudgets[f].surface,
+                    options.mode, options.flatCellsByDistance, options.evenColumnsCutAcross);
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
                 needs[k].assign(faceLines[f].axes[nodes[k] % 2]->intervals().size() - 1, 0);

@@ -36,6 +36,12 @@ struct TessellationOptions {
     // A face whose region is its whole frame box cuts its spans into the fewest equal columns
     // that meet the bound, not into a power of two (chooseEvenColumns). Off only to measure.
     bool evenColumns = true;
+    // Even columns also where the kd-tree cuts the columns across into rows (a sphere, a torus,
+    // a freeform patch; evenColumnNeeds). The display and the analysis overlays keep their
+    // halvings there: they interpolate normals, whose bound was measured on halvings (a
+    // sphere's spread pole went 1.09 degrees over its 1-degree bound with these columns, and
+    // a G2 joint's zebra stripes kinked by 11.7 degrees).
+    bool evenColumnsCutAcross = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
