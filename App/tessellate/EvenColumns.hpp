@@ -14,8 +14,8 @@ namespace nurbslod {
 // would do, and its circles carry those points too. A face can take equal columns instead where
 // every cell of its kd-tree is full or filled to its sides, i.e. where its trimmed region is
 // the whole box of its frame: every trimming curve straight in (u, v) along one of the box's
-// sides (a cylinder, cone or torus between circles, a rectangle of a plane); and where its
-// region covers most of the box (kEvenColumnsRegionShare).
+// sides (a cylinder, cone or torus between circles, a rectangle of a plane). A face whose
+// region covers most of the box takes them too (kEvenColumnsRegionShare).
 bool regionIsTheBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids);
 
 // The share of the face's frame box that its trimmed region covers, in (u, v): 1 for a whole
@@ -47,6 +47,6 @@ inline constexpr double kEvenColumnsRegionShare = 0.8;
 // cut it on the same lines.
 std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids,
                                  int axis, double target, ErrorMode mode, bool flatCellsByDistance,
-                                 bool cutAcross = true);
+                                 bool cutAcross);
 
 }  // namespace nurbslod

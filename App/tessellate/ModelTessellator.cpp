@@ -456,9 +456,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // is cut by that face's kd-tree too: the two axes take the same columns, the largest of
     // their needs, on the same frame, or neither takes any (bottle.brep's cylinders alone,
     // whose circles its tori share and cut on halvings of their own: 4,428 triangles at
-    // relative 1e-3 became 4,676). The axes so tied
-    // make one group (union-find over face * 2 + axis); its columns are chosen again where step
-    // 1a or 1b changes a member's surface share.
+    // relative 1e-3 became 4,676). The axes so tied make one group (union-find over
+    // face * 2 + axis); its columns are chosen again where step 1a or 1b changes a member's
+    // surface share.
     auto hasEvenColumns = [&](int f) {
         const auto& axes = faceLines[f].axes;
         return (axes[0] && axes[0]->hasEvenColumns()) || (axes[1] && axes[1]->hasEvenColumns());
