@@ -582,7 +582,27 @@ Paths FaceTessellator::regionOf(const std::vector<BoundaryLoop>& loops) const {
     return region;
 }
 
-void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
+// What the bound said of a filled cell (it depends on the cell alone): whether it settles, and
+// where not, how the bound would cut it. The kd-tree built twice (findCrossings) bounds most of
+// its cells once: the two builds differ in their upper cuts only.
+struct FaceTessellator::CellDecisions {
+    struct Decision {
+        bool settles = false;
+        CellSplit preferred;
+    };
+    struct RectHash {
+        std::size_t operator()(const std::array<cInt, 4>& key) const {
+            std::size_t h = 0;
+            for (const cInt value : key) h = h * 0x9E3779B97F4A7C15ull + std::hash<cInt>()(value);
+            return h;
+        }
+    };
+    bool record = false;
+    std::unordered_map<std::array<cInt, 4>, Decision, RectHash> byRect;
+};
+
+void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
+                                  CellDecisions& decisions) {
     leaves_.clear();
     struct Node {
         Rect rect;
@@ -754,12 +774,24 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
         CellSplit preferred;
         // a trimmed cell whose bound for corners on its sides would do (bandSplit)
         bool sidesWouldDo = false;
-        if (mode_ == ErrorMode::Guaranteed && centreBeyond(piece, target)) {
+        const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
+        const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
+        if (known != decisions.byRect.end()) {
+            if (known->second.settles) {
+                leaves_[node.index].leaf = true;
+                continue;
+            }
+            preferred = known->second.preferred;
+        } else if (mode_ == ErrorMode::Guaranteed && centreBeyond(piece, target)) {
             preferred = preferredSplit(piece);
+            if (node.full && decisions.record) decisions.byRect[key] = {false, preferred};
         } else {
             const CellErrorBound bound = cellErrorBound(
                 piece, mode_, target, trimmedCell, choices_.flatCellsByDistance, pieceFraction);
-            if (bound.measure(mode_, trimmedCell) <= target) {
+            const bool settles = bound.measure(mode_, trimmedCell) <= target;
+            if (node.full && decisions.record)
+                decisions.byRect[key] = {settles, {bound.splitDirection, bound.splitAt}};
+            if (settles) {
                 leaves_[node.index].leaf = true;
                 continue;
             }
@@ -787,6 +819,17 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing) {
             continue;
         }
         int direction = preferred.direction;
+        // a cell the bound would cut across its even columns, where it holds two or more of
+        // them: cut along them instead on the second build (findCrossings)
+        auto evenSplitAlong = [&](int axis) -> std::optional<std::int64_t> {
+            if (!frame_->even[axis]) return std::nullopt;
+            return (*choices_.evenColumns)[axis].evenSplit(axis == 0 ? r.x0 : r.y0,
+                                                           axis == 0 ? r.x1 : r.y1);
+        };
+        if (!evenSplitAlong(direction) && evenSplitAlong(1 - direction)) {
+            evenOrderMatters_ = true;
+            if (evenLinesFirst_) direction = 1 - direction;
+        }
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
         // on the even columns' middle line where the cell holds two or more (the lines its
@@ -1009,7 +1052,36 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     for (const auto& p : region) area += ClipperLib::Area(p);
     if (!(std::abs(area) > 0)) throw FaceWithoutArea("the trimming loops enclose no area");
     const bool simpleRegion = isOneRingWithoutTouch(region);
-    buildKdTree(region, simpleRegion);
+    // The bound cuts a cell across its even columns where that is the larger error, and the
+    // rows cut so run over all the columns in the cell: each column then takes the rows its
+    // neediest neighbour needs. Where a column's rows settle sooner in some columns than in
+    // others (a loft's side, one span of degree 12 around: 16 to 59 rows in its 26 columns),
+    // cutting the columns first lets each take its own; where the columns' need differs from
+    // row to row instead (a sphere's, fewer near its poles), cutting across first does. Where
+    // the order matters, the kd-tree is built both ways and the one with fewer cells kept; the
+    // second build takes the first's bounds of the cells both have (CellDecisions). The 32
+    // models at relative 1e-3 and 1e-4: the loft 4,502 -> 2,894 and 60,604 -> 47,520 triangles,
+    // trj7_b1-ec-214.stp at 1e-4 40,091 -> 40,067, the others unchanged; about 5% more
+    // instructions for a face built twice (the hollow sphere at 1e-4).
+    CellDecisions decisions;
+    decisions.record = frame_->even[0] || frame_->even[1];
+    buildKdTree(region, simpleRegion, decisions);
+    if (evenOrderMatters_) {
+        auto leafCount = [](const std::vector<Leaf>& leaves) {
+            return std::count_if(leaves.begin(), leaves.end(),
+                                 [](const Leaf& leaf) { return leaf.leaf; });
+        };
+        std::vector<Leaf> rowsFirst = std::move(leaves_);
+        const bool rowsFirstReached = toleranceReached_;
+        evenLinesFirst_ = true;
+        toleranceReached_ = true;
+        decisions.record = false;
+        buildKdTree(region, simpleRegion, decisions);
+        if (leafCount(leaves_) >= leafCount(rowsFirst)) {
+            leaves_ = std::move(rowsFirst);
+            toleranceReached_ = rowsFirstReached;
+        }
+    }
 
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)

@@ -72,7 +72,9 @@ private:
     ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
     // oneSimpleRing: the region is one ring that visits no point twice (the one-pass clip's
     // case, simpleRingPiece)
-    void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing);
+    // decisions: what the bounds said of filled cells, kept by one build for the next
+    struct CellDecisions;
+    void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing, CellDecisions& decisions);
     // visit(leaf, piece, oneSimpleRing): the piece of the region that the leaf is cut from,
     // and whether it is known to be one simple ring
     void forEachLeaf(
@@ -87,6 +89,8 @@ private:
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;
+    bool evenLinesFirst_ = false;
+    bool evenOrderMatters_ = false;
 };
 
 }  // namespace nurbslod
