@@ -35,16 +35,16 @@ inline constexpr double kEvenColumnsRegionShare = 0.8;
 
 // Per interval of `axis` (KdTreeGrid::intervals): the fewest equal columns whose cells, over
 // each whole span of the other axis, meet `target` (the face's surface share, bounded as cells
-// filled to their sides). 1 where the interval needs no cut; 0 where no count up to 64 does.
-// Where a column would need cuts across it too, and `cutAcross`, the fewest whose cells meet
-// it once the kd-tree has cut them across into rows, taken only where that count is well
-// under the power of two the halvings give the neediest rows (kRowColumnsShare): the need of
-// such columns differs from row to row (a torus's columns near its axis need fewer than at its
-// rim), and the kd-tree's halvings follow that where equal columns cannot (bottle.brep at
-// relative 1e-4: a torus with equal columns everywhere took 2,037 triangles instead of
-// 1,758, and the cylinder sharing its circle 434 instead of 282). Faces that share an edge
-// along the axis take the largest of their needs (ModelTessellator), so that their kd-trees
-// cut it on the same lines.
+// filled to their sides). 1 where the interval needs no cut; 0 where no count up to 256 does.
+// Where a column would need cuts across it too, and `cutAcross`, the fewest (up to 64) whose
+// cells meet it once the kd-tree has cut them across into rows, taken only where that count
+// is well under the power of two the halvings give the neediest rows (kRowColumnsShare): the
+// need of such columns differs from row to row (a torus's columns near its axis need fewer
+// than at its rim), and the kd-tree's halvings follow that where equal columns cannot (bottle.brep
+// at relative 1e-4: a torus with equal columns everywhere took 2,037 triangles instead of 1,758,
+// and the cylinder sharing its circle 434 instead of 282). Faces that share an edge along the axis
+// take the largest of their needs (ModelTessellator), so that their kd-trees cut it on the same
+// lines.
 std::vector<int> evenColumnNeeds(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids,
                                  int axis, double target, ErrorMode mode, bool flatCellsByDistance,
                                  bool cutAcross);
