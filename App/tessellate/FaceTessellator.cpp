@@ -818,24 +818,24 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             leaves_[node.index].leaf = true;
             continue;
         }
+        // each axis's even columns' middle line where the cell holds two or more (the lines its
+        // edges' points were put on)
+        std::optional<std::int64_t> evenSplits[2];
+        for (int axis = 0; axis < 2; ++axis)
+            if (frame_->even[axis])
+                evenSplits[axis] = (*choices_.evenColumns)[axis].evenSplit(axis == 0 ? r.x0 : r.y0,
+                                                                           axis == 0 ? r.x1 : r.y1);
         int direction = preferred.direction;
         // a cell the bound would cut across its even columns, where it holds two or more of
         // them: cut along them instead on the second build (findCrossings)
-        auto evenSplitAlong = [&](int axis) -> std::optional<std::int64_t> {
-            if (!frame_->even[axis]) return std::nullopt;
-            return (*choices_.evenColumns)[axis].evenSplit(axis == 0 ? r.x0 : r.y0,
-                                                           axis == 0 ? r.x1 : r.y1);
-        };
-        if (!evenSplitAlong(direction) && evenSplitAlong(1 - direction)) {
+        if (!evenSplits[direction] && evenSplits[1 - direction]) {
             evenOrderMatters_ = true;
             if (evenLinesFirst_) direction = 1 - direction;
         }
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
-        // on the even columns' middle line where the cell holds two or more (the lines its
-        // edges' points were put on), else where the bound says
-        std::optional<std::int64_t> even;
-        if (frame_->even[direction]) even = (*choices_.evenColumns)[direction].evenSplit(lo, hi);
+        // on that even line, else where the bound says
+        const std::optional<std::int64_t>& even = evenSplits[direction];
         const cInt at = even ? static_cast<cInt>(*even)
                              : std::clamp<cInt>(lo + std::llround(preferred.at * double(hi - lo)),
                                                 lo + 1, hi - 1);
