@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace nurbslod {
 
@@ -41,8 +42,7 @@ std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
     // the span around the window, halved as the kd-tree halves a cell (FaceTessellator: the
     // split at 0.5 rounded to a step, kept off the cell's sides)
     const auto [a, b, index] = intervalAround(hi);
-    if (hasEvenColumns() && counts_[index] >= 2)
-        return evenLineWithin(a, b, counts_[index], lo, hi);
+    if (hasEvenColumns() && lines_[index].size() >= 3) return evenLineWithin(lines_[index], lo, hi);
     return halvingWithin(a, b, lo, hi);
 }
 
@@ -53,27 +53,57 @@ KdTreeGrid::Interval KdTreeGrid::intervalAround(std::int64_t x) const {
             static_cast<std::size_t>(after - breaks_.begin())};
 }
 
-std::optional<double> KdTreeGrid::evenLineWithin(std::int64_t a, std::int64_t b, int k,
+std::optional<double> KdTreeGrid::evenLineWithin(const std::vector<std::int64_t>& lines,
                                                  std::int64_t lo, std::int64_t hi) const {
     // as FaceTessellator splits: the middle column line while a cell holds two columns or more,
     // then the column's halvings
-    int first = 0, last = k;
+    std::size_t first = 0, last = lines.size() - 1;
     while (last - first >= 2) {
-        const int middle = (first + last) / 2;
-        const std::int64_t x = columnLine(a, b, k, middle);
+        const std::size_t middle = (first + last) / 2;
+        const std::int64_t x = lines[middle];
         if (x >= lo && x <= hi) return parameterOf(x);
         if (x < lo)
             first = middle;
         else
             last = middle;
     }
-    return halvingWithin(columnLine(a, b, k, first), columnLine(a, b, k, last), lo, hi);
+    return halvingWithin(lines[first], lines[last], lo, hi);
 }
 
-void KdTreeGrid::setEvenColumns(std::vector<int> counts) {
-    const bool any = std::any_of(counts.begin(), counts.end(), [](int k) { return k >= 2; });
-    if (!any || counts.size() != breaks_.size() + 1) counts.clear();
-    counts_ = std::move(counts);
+void KdTreeGrid::setColumnLines(std::vector<std::vector<std::int64_t>> lines) {
+    const std::vector<std::int64_t> borders = intervals();
+    bool any = lines.size() + 1 == borders.size();
+    for (std::size_t i = 0; any && i < lines.size(); ++i) {
+        auto& own = lines[i];
+        if (own.size() < 3) {  // one column: as halvings
+            own.clear();
+            continue;
+        }
+        // from the interval's first border to its last, strictly increasing
+        any = own.front() == borders[i] && own.back() == borders[i + 1] &&
+              std::adjacent_find(own.begin(), own.end(), std::greater_equal<>()) == own.end();
+    }
+    any = any && std::any_of(lines.begin(), lines.end(), [](const auto& l) { return !l.empty(); });
+    if (!any) lines.clear();
+    lines_ = std::move(lines);
+}
+
+void KdTreeGrid::setEvenColumns(const std::vector<int>& counts) {
+    const std::vector<std::int64_t> borders = intervals();
+    if (counts.size() + 1 != borders.size()) {
+        lines_.clear();
+        return;
+    }
+    std::vector<std::vector<std::int64_t>> lines(counts.size());
+    for (std::size_t i = 0; i < counts.size(); ++i)
+        for (int c = 0; counts[i] >= 2 && c <= counts[i]; ++c)
+            lines[i].push_back(columnLine(borders[i], borders[i + 1], counts[i], c));
+    setColumnLines(std::move(lines));
+}
+
+const std::vector<std::int64_t>& KdTreeGrid::columnLines(std::size_t i) const {
+    static const std::vector<std::int64_t> none;
+    return i < lines_.size() ? lines_[i] : none;
 }
 
 std::vector<std::int64_t> KdTreeGrid::intervals() const {
@@ -86,16 +116,13 @@ std::vector<std::int64_t> KdTreeGrid::intervals() const {
 std::optional<std::int64_t> KdTreeGrid::evenSplit(std::int64_t x0, std::int64_t x1) const {
     if (!hasEvenColumns() || x1 - x0 < 2) return std::nullopt;
     const auto [a, b, index] = intervalAround(x1);
-    const int k = counts_[index];
-    if (k < 2 || x0 < a || x1 > b) return std::nullopt;
-    auto indexOf = [&](std::int64_t x) -> std::optional<int> {
-        const auto c = static_cast<int>(std::llround(double(x - a) * k / double(b - a)));
-        if (c < 0 || c > k || columnLine(a, b, k, c) != x) return std::nullopt;
-        return c;
-    };
-    const auto c0 = indexOf(x0), c1 = indexOf(x1);
-    if (!c0 || !c1 || *c1 - *c0 < 2) return std::nullopt;
-    return columnLine(a, b, k, (*c0 + *c1) / 2);
+    const auto& lines = lines_[index];
+    if (lines.size() < 3 || x0 < a || x1 > b) return std::nullopt;
+    const auto c0 = std::lower_bound(lines.begin(), lines.end(), x0);
+    const auto c1 = std::lower_bound(c0, lines.end(), x1);
+    if (c0 == lines.end() || c1 == lines.end() || *c0 != x0 || *c1 != x1 || c1 - c0 < 2)
+        return std::nullopt;
+    return *(c0 + (c1 - c0) / 2);
 }
 
 std::optional<double> KdTreeGrid::halvingWithin(std::int64_t a, std::int64_t b, std::int64_t lo,

@@ -47,16 +47,21 @@ public:
     // the interval is below the frame's resolution or outside the frame.
     std::optional<double> lineWithin(double c0, double c1) const;
 
-    // Even columns: the kd-tree may cut an interval between span borders into k equal columns
-    // rather than halve it (a half cylinder whose bound allows 47 columns gets 47, not 64). It
-    // then splits a cell of several columns at the column line in its middle, by count, and a
-    // single column in halves. counts[i] is the number of columns of interval i (intervals()),
-    // 0 for halvings.
-    void setEvenColumns(std::vector<int> counts);
-    bool hasEvenColumns() const { return !counts_.empty(); }
+    // Even columns: the kd-tree may cut an interval between span borders into columns rather
+    // than halve it (a half cylinder whose bound allows 47 columns gets 47, not 64). It then
+    // splits a cell of several columns at the column line in its middle, by count, and a
+    // single column in halves. lines[i] holds the lines of interval i (intervals()) from its
+    // first border to its last, in frame steps and increasing, or nothing for halvings: equal
+    // columns (setEvenColumns, counts[i] of them) or graded ones, as wide as each place allows
+    // (EvenColumns.hpp).
+    void setColumnLines(std::vector<std::vector<std::int64_t>> lines);
+    void setEvenColumns(const std::vector<int>& counts);
+    bool hasEvenColumns() const { return !lines_.empty(); }
+    // interval i's column lines (empty: halvings)
+    const std::vector<std::int64_t>& columnLines(std::size_t i) const;
     // The borders of the intervals, in frame steps: 0, the span borders, kKdTreeFrameScale.
     std::vector<std::int64_t> intervals() const;
-    // Line c of an interval [a, b] of k even columns, in frame steps.
+    // Line c of an interval [a, b] of k equal columns, in frame steps.
     static std::int64_t columnLine(std::int64_t a, std::int64_t b, int k, int c) {
         return a + std::llround(double(b - a) * c / k);
     }
@@ -90,12 +95,13 @@ private:
         std::size_t index;
     };
     Interval intervalAround(std::int64_t x) const;
-    // the coarsest line of the even columns of [a, b] that lands in [lo, hi] (frame steps)
-    std::optional<double> evenLineWithin(std::int64_t a, std::int64_t b, int k, std::int64_t lo,
+    // the coarsest of the column `lines` that lands in [lo, hi] (frame steps)
+    std::optional<double> evenLineWithin(const std::vector<std::int64_t>& lines, std::int64_t lo,
                                          std::int64_t hi) const;
 
     std::vector<std::int64_t> breaks_;  // span borders strictly inside, in frame steps, sorted
-    std::vector<int> counts_;           // even columns per interval, empty: none
+    // column lines per interval (each empty for halvings), empty: none anywhere
+    std::vector<std::vector<std::int64_t>> lines_;
 };
 
 }  // namespace nurbslod

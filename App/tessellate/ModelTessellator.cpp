@@ -445,7 +445,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     forEachIndex(0, faceCount, [&](int f) {
         if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
     });
-    // Even columns (evenColumnNeeds) where a face's region is its whole frame box, or most of
+    // Even columns (evenColumnLines) where a face's region is its whole frame box, or most of
     // it (kEvenColumnsRegionShare). A face with a free edge bounds the cells at its boundary as
     // trimmed ones (CellChoices::filledCellsBySides), which then split within their columns:
     // in guaranteed mode it takes them too (wing.brep at relative 1e-3: 734 triangles instead
@@ -526,35 +526,104 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::map<int, std::vector<int>> columnGroups;  // group -> its nodes
     for (int node = 0; node < 2 * faceCount; ++node)
         if (columnCandidate[node / 2]) columnGroups[groupOf(node)].push_back(node);
-    // A group's columns: the largest need of its members per interval, none where a member has
-    // no count. Returns its faces.
+    // A group's columns per interval: none where a member has none; the lines of its members
+    // where they agree; the largest count where all are equal columns; otherwise all members'
+    // lines together, less each line whose two columns, merged, settle on every member (each
+    // member's own lines settle on it, and a column within a settled one settles too). Returns
+    // its faces.
     auto assignColumns = [&](const std::vector<int>& nodes) {
         std::set<int> faces;
         for (const int node : nodes) faces.insert(node / 2);
-        auto setCounts = [&](const std::vector<int>& counts) {
-            for (const int node : nodes) faceLines[node / 2].axes[node % 2]->setEvenColumns(counts);
+        auto setLines = [&](const std::vector<std::vector<std::int64_t>>& lines) {
+            for (const int node : nodes) faceLines[node / 2].axes[node % 2]->setColumnLines(lines);
         };
-        setCounts({});
+        setLines({});
         if (std::any_of(nodes.begin(), nodes.end(),
                         [&](int node) { return columnsRuledOut[node]; }))
             return faces;
-        std::vector<std::vector<int>> needs(nodes.size());
+        const KdTreeGrid& grid = *faceLines[nodes.front() / 2].axes[nodes.front() % 2];
+        const std::vector<std::int64_t> intervals = grid.intervals();
+        std::vector<std::vector<std::vector<std::int64_t>>> lines(nodes.size());
+        // the face's edges that run along the axis on an iso-line, with their chords' share
+        auto chordsAlong = [&](int f, int axis) {
+            std::vector<ChordsAlong> chords;
+            for (int l = 0; l < static_cast<int>(model.faces[f].loops.size()); ++l)
+                for (int c = 0; c < static_cast<int>(model.faces[f].loops[l].curves.size()); ++c) {
+                    const std::size_t e = model.faces[f].loops[l].curves[c].edge;
+                    if (e >= uses.size() || model.edges[e].degenerated) continue;
+                    ChordsAlong edge;
+                    for (std::size_t k = 0; k < uses[e].size(); ++k) {
+                        const EdgeUse& use = uses[e][k];
+                        if (use.face == f && use.loop == l && use.curve == c) edge.own = k;
+                        edge.uses.push_back(curveOnSurface(use));
+                    }
+                    const CurveOnSurface& own = edge.uses[edge.own];
+                    if (!own.straightInParameterPlane() ||
+                        own.uv(0)[1 - axis] != own.uv(1)[1 - axis] ||
+                        own.uv(0)[axis] == own.uv(1)[axis])
+                        continue;
+                    edge.approximation = edgeBudget(e, curveUse[e] >= 0).lineApproximation;
+                    chords.push_back(std::move(edge));
+                }
+            return chords;
+        };
         forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
-                needs[k] = evenColumnNeeds(
+                lines[k] = evenColumnLines(
                     model.faces[f], *faceLines[f].both(), nodes[k] % 2, faceBudgets[f].surface,
-                    options.mode, options.flatCellsByDistance, options.evenColumnsCutAcross);
+                    options.mode, options.flatCellsByDistance, options.evenColumnsCutAcross,
+                    options.gradedColumns, chordsAlong(f, nodes[k] % 2));
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
-                needs[k].assign(faceLines[f].axes[nodes[k] % 2]->intervals().size() - 1, 0);
+                lines[k].assign(intervals.size() - 1, {});
             }
         });
-        std::vector<int> counts = needs.front();
-        for (const auto& need : needs)
-            for (size_t i = 0; i < counts.size(); ++i)
-                counts[i] = need[i] == 0 || counts[i] == 0 ? 0 : std::max(counts[i], need[i]);
-        setCounts(counts);
+        std::vector<std::vector<std::int64_t>> merged(intervals.size() - 1);
+        for (std::size_t i = 0; i < merged.size(); ++i) {
+            const std::int64_t a = intervals[i], b = intervals[i + 1];
+            bool none = false, agree = true, allEqual = true;
+            std::size_t most = 0;
+            for (const auto& own : lines) {
+                none = none || own[i].empty();
+                agree = agree && own[i] == lines.front()[i];
+                const int count = static_cast<int>(own[i].size()) - 1;
+                for (int c = 0; c <= count && allEqual; ++c)
+                    allEqual = own[i][c] == KdTreeGrid::columnLine(a, b, count, c);
+                most = std::max(most, own[i].size());
+            }
+            if (none) continue;
+            if (agree) {
+                merged[i] = lines.front()[i];
+                continue;
+            }
+            if (allEqual) {
+                for (int c = 0; c + 1 < static_cast<int>(most); ++c)
+                    merged[i].push_back(
+                        KdTreeGrid::columnLine(a, b, static_cast<int>(most) - 1, c));
+                merged[i].push_back(b);
+                continue;
+            }
+            std::set<std::int64_t> all;
+            for (const auto& own : lines) all.insert(own[i].begin(), own[i].end());
+            std::vector<std::int64_t> kept{a};
+            std::vector<std::int64_t> candidates(all.begin(), all.end());
+            std::vector<std::unique_ptr<ColumnTest>> tests;
+            for (const int node : nodes)
+                tests.push_back(std::make_unique<ColumnTest>(
+                    model.faces[node / 2], *faceLines[node / 2].both(), node % 2,
+                    faceBudgets[node / 2].surface, options.mode, options.flatCellsByDistance,
+                    chordsAlong(node / 2, node % 2)));
+            for (std::size_t c = 1; c + 1 < candidates.size(); ++c) {
+                const bool mergeable = std::all_of(tests.begin(), tests.end(), [&](const auto& t) {
+                    return t->columnAndChordsSettle(kept.back(), candidates[c + 1]);
+                });
+                if (!mergeable) kept.push_back(candidates[c]);
+            }
+            kept.push_back(b);
+            merged[i] = std::move(kept);
+        }
+        setLines(merged);
         return faces;
     };
     for (const auto& [group, nodes] : columnGroups) assignColumns(nodes);

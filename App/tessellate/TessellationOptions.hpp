@@ -34,10 +34,13 @@ struct TessellationOptions {
     // Off only to measure what that saves.
     bool narrowShareGaps = true;
     // A face whose region is its whole frame box cuts its spans into the fewest equal columns
-    // that meet the bound, not into a power of two (chooseEvenColumns). Off only to measure.
+    // that meet the bound, not into a power of two (evenColumnLines). Off only to measure.
     bool evenColumns = true;
+    // Such a face's columns graded, each as wide as its place allows, where they are fewer
+    // than equal ones (ColumnTest::gradedLines). Off only to measure.
+    bool gradedColumns = true;
     // Even columns also where the kd-tree cuts the columns across into rows (a sphere, a torus,
-    // a freeform patch; evenColumnNeeds). The display and the analysis overlays keep their
+    // a freeform patch; evenColumnLines). The display and the analysis overlays keep their
     // halvings there: they interpolate normals, whose bound was measured on halvings (a
     // sphere's spread pole went 1.09 degrees over its 1-degree bound with these columns, and
     // a G2 joint's zebra stripes kinked by 11.7 degrees).

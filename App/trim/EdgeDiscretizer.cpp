@@ -33,6 +33,10 @@ bool flatEnough(std::vector<CurvePoints>& uses, double s0, double s1, double eps
 
 }  // namespace
 
+bool chordSettles(std::vector<CurvePoints>& uses, double s0, double s1, double approximation) {
+    return flatEnough(uses, s0, s1, approximation);
+}
+
 std::vector<CurvePoints> curvePointsOf(const std::vector<CurveOnSurface>& uses) {
     std::vector<CurvePoints> points;
     for (const auto& use : uses) points.emplace_back(use);

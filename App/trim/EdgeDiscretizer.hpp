@@ -10,6 +10,10 @@ namespace nurbslod {
 // One cache of evaluated points per use, in order: what the functions below take as `points`.
 std::vector<CurvePoints> curvePointsOf(const std::vector<CurveOnSurface>& uses);
 
+// Whether the piece [s0, s1] of an edge is one chord for discretizeEdge: every use's curve
+// within `approximation` of its chord there (chordBound, its interpolation trusted).
+bool chordSettles(std::vector<CurvePoints>& uses, double s0, double s1, double approximation);
+
 // Discretises one B-rep edge for all the faces that use it (its curves on their surfaces), in
 // the edge's normalised parameter s in [0, 1], so that every face's 3D curve stays within
 // `approximation` of its chords (midpoint subdivision under the chord bound, paper section 5.1)

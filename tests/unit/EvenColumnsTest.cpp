@@ -1,15 +1,22 @@
-// Even columns (KdTreeGrid::setEvenColumns, chooseEvenColumns): a span cut into the fewest equal
+// Even columns (KdTreeGrid::setEvenColumns, evenColumnLines): a span cut into the fewest equal
 // columns that meet the bound, not a power of two, with the edges' points on the same lines as
 // the kd-tree's cuts.
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <gp_Ax2.hxx>
@@ -19,6 +26,8 @@
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
+#include "tessellate/EvenColumns.hpp"
+#include "tessellate/KdTreeAlignedHalving.hpp"
 #include "tessellate/KdTreeGrid.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
@@ -182,12 +191,9 @@ TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
     EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
 }
 
-// wing.brep's four faces each have a free edge: their cells at it are bounded as trimmed
-// (CellChoices::filledCellsBySides) and split further within the columns, but the columns
-// still beat halvings in guaranteed mode. At relative 1e-3: 734 triangles against 857, and
-// no more open edges (36 against 37; BRepMesh 50). At 1e-4 each face, one long span, takes 65
-// to 108 columns (kMostColumns): 6,657 triangles against 7,792.
-TEST(EvenColumns, FacesWithFreeEdgesTakeThemToo) {
+// wing.brep at relative 1e-3 and 1e-4, tessellated with `option` on and off: on, the mesh is
+// within the tolerance, has no more open edges, and takes at most `share` of the triangles.
+void expectWingTakesFewerWith(bool TessellationOptions::*option, double share) {
     const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "wing.brep";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
     const TopoDS_Shape shape = occ::readShape(path.string());
@@ -195,17 +201,124 @@ TEST(EvenColumns, FacesWithFreeEdgesTakeThemToo) {
     for (const double relative : {1e-3, 1e-4}) {
         TessellationOptions options;
         options.tolerance = relative * model.boundingBoxDiagonal;
-        const auto even = tessellateModel(model, options);
-        options.evenColumns = false;
-        const auto halved = tessellateModel(model, options);
-        const auto evenReport = occ::verifyMesh(shape, even.mesh, options.tolerance);
-        const auto halvedReport = occ::verifyMesh(shape, halved.mesh, options.tolerance);
-        EXPECT_TRUE(evenReport.pass) << relative << ": max dev " << evenReport.maxDev;
-        EXPECT_LE(evenReport.openEdges, halvedReport.openEdges) << relative;
-        EXPECT_LT(double(even.mesh.triangles.size()), 0.9 * double(halved.mesh.triangles.size()))
-            << relative << ": " << even.mesh.triangles.size() << " vs "
-            << halved.mesh.triangles.size();
+        const auto on = tessellateModel(model, options);
+        options.*option = false;
+        const auto off = tessellateModel(model, options);
+        const auto onReport = occ::verifyMesh(shape, on.mesh, options.tolerance);
+        const auto offReport = occ::verifyMesh(shape, off.mesh, options.tolerance);
+        EXPECT_TRUE(onReport.pass) << relative << ": max dev " << onReport.maxDev;
+        EXPECT_LE(onReport.openEdges, offReport.openEdges) << relative;
+        EXPECT_LE(double(on.mesh.triangles.size()), share * double(off.mesh.triangles.size()))
+            << relative << ": " << on.mesh.triangles.size() << " vs " << off.mesh.triangles.size();
     }
+}
+
+// wing.brep's four faces each have a free edge: their cells at it are bounded as trimmed
+// (CellChoices::filledCellsBySides) and split further within the columns, but the columns
+// still beat halvings in guaranteed mode. At relative 1e-3: 687 triangles against 857, and
+// no more open edges (35 against 37; BRepMesh 50). At 1e-4 each face, one long span, takes 65
+// to 108 columns (kMostColumns): 6,557 triangles against 7,792.
+TEST(EvenColumns, FacesWithFreeEdgesTakeThemToo) {
+    expectWingTakesFewerWith(&TessellationOptions::evenColumns, 0.9);
+}
+
+// Graded column lines: the kd-tree splits a cell of several columns at its middle line by
+// count, wherever that line lies, and an edge's pieces are halved on the same lines; lines
+// that do not run from the interval's first border to its last, increasing, are refused.
+TEST(KdTreeGrid, GradedColumnsAreWhereTheKdTreeSplits) {
+    KdTreeGrid grid(0, 2, {1});
+    const std::vector<std::int64_t> intervals = grid.intervals();
+    ASSERT_EQ(intervals.size(), 3u);
+    const std::int64_t a = intervals[0], b = intervals[1];
+    // five columns, each 1.5 times as wide as the one before
+    std::vector<std::int64_t> lines{a};
+    double width = double(b - a) / (1 + 1.5 + 2.25 + 3.375 + 5.0625), at = double(a);
+    for (int c = 0; c < 4; ++c, width *= 1.5) lines.push_back(std::llround(at += width));
+    lines.push_back(b);
+    grid.setColumnLines({lines, {}});
+    ASSERT_TRUE(grid.hasEvenColumns());
+    EXPECT_EQ(grid.columnLines(0), lines);
+    EXPECT_TRUE(grid.columnLines(1).empty());
+    EXPECT_EQ(grid.evenSplit(a, b), lines[2]);
+    EXPECT_EQ(grid.evenSplit(a, lines[2]), lines[1]);
+    EXPECT_EQ(grid.evenSplit(lines[2], b), lines[3]);
+    EXPECT_FALSE(grid.evenSplit(lines[3], lines[4]));  // one column: halved
+    EXPECT_FALSE(grid.evenSplit(a + 1, lines[3]));     // not on a line
+    EXPECT_FALSE(grid.evenSplit(b, intervals[2]));     // the other interval halves
+    std::set<std::int64_t> splits;
+    collectSplits(grid, a, b, splits);
+    EXPECT_EQ(splits, std::set<std::int64_t>(lines.begin() + 1, lines.end() - 1));
+    // an edge piece over the interval's first half holds lines[2] (at 0.30 of the interval)
+    // in its middle half: the coarsest line there is the kd-tree's first split
+    const auto line = grid.lineWithin(grid.parameterAt(a), grid.parameterAt(a + (b - a) / 2));
+    ASSERT_TRUE(line);
+    EXPECT_DOUBLE_EQ(*line, grid.parameterAt(lines[2]));
+
+    KdTreeGrid wrong(0, 2, {1});
+    wrong.setColumnLines({{a + 1, lines[2], b}, {}});  // not from the border
+    EXPECT_FALSE(wrong.hasEvenColumns());
+    wrong.setColumnLines({{a, lines[2], lines[2], b}, {}});  // not increasing
+    EXPECT_FALSE(wrong.hasEvenColumns());
+    wrong.setColumnLines({lines});  // one interval of two
+    EXPECT_FALSE(wrong.hasEvenColumns());
+}
+
+// Three eighths of a circle (135 degrees) swept along z, as one rational span (weights 1,
+// cos 67.5 degrees, 1): its parameter turns the arc unevenly, about a third faster in the
+// middle than at the ends, so equal columns are sized by the middle. Graded columns are each
+// the widest that settles: fewer, each settling, and wider at the ends than in the middle.
+TEST(EvenColumns, GradedColumnsFollowAnUnevenArc) {
+    const double half = 67.5 * M_PI / 180, w = std::cos(half), r = 10;
+    TColgp_Array2OfPnt poles(1, 3, 1, 2);
+    TColStd_Array2OfReal weights(1, 3, 1, 2);
+    const gp_Pnt arc[3] = {gp_Pnt(r, 0, 0), gp_Pnt(r, r * std::tan(half), 0),
+                           gp_Pnt(r * std::cos(2 * half), r * std::sin(2 * half), 0)};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 2; ++j) {
+            poles(i + 1, j + 1) = arc[i].Translated(gp_Vec(0, 0, 10.0 * j));
+            weights(i + 1, j + 1) = i == 1 ? w : 1.0;
+        }
+    TColStd_Array1OfReal knotsU(1, 2), knotsV(1, 2);
+    TColStd_Array1OfInteger multsU(1, 2), multsV(1, 2);
+    knotsU(1) = knotsV(1) = 0;
+    knotsU(2) = knotsV(2) = 1;
+    multsU(1) = multsU(2) = 3;
+    multsV(1) = multsV(2) = 2;
+    const Handle(Geom_BSplineSurface) surface =
+        new Geom_BSplineSurface(poles, weights, knotsU, knotsV, multsU, multsV, 2, 1);
+    const TopoDS_Shape face = BRepBuilderAPI_MakeFace(surface, 1e-7).Face();
+    const Model model = occ::importModel(face);
+    ASSERT_EQ(model.faces.size(), 1u);
+    const auto grids = kdTreeLinesBeforeDiscretisation(model.faces[0]).both();
+    ASSERT_TRUE(grids);
+    const double target = 1e-3;
+    const auto equal = evenColumnLines(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed,
+                                       true, false, false);
+    const auto graded = evenColumnLines(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed,
+                                        true, false, true);
+    ASSERT_EQ(equal.size(), 1u);
+    ASSERT_EQ(graded.size(), 1u);
+    const auto& lines = graded[0];
+    ASSERT_GE(equal[0].size(), 4u);
+    // 86 graded columns against 95 equal ones
+    EXPECT_LE(double(lines.size() - 1), 0.95 * double(equal[0].size() - 1))
+        << lines.size() - 1 << " graded, " << equal[0].size() - 1 << " equal";
+    EXPECT_EQ(lines.front(), 0);
+    EXPECT_EQ(lines.back(), kKdTreeFrameScale);
+    const ColumnTest test(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed, true);
+    for (std::size_t c = 0; c + 1 < lines.size(); ++c) {
+        EXPECT_LT(lines[c], lines[c + 1]);
+        EXPECT_TRUE(test.settles(lines[c], lines[c + 1], false)) << "column " << c;
+    }
+    const std::size_t middle = (lines.size() - 1) / 2;
+    EXPECT_GT(lines[1] - lines[0], lines[middle + 1] - lines[middle]);
+}
+
+// wing.brep's faces are whole boxes whose one long span bends unevenly: graded columns take
+// fewer triangles than equal ones (687 against 734 at relative 1e-3, 6,557 against 6,657 at
+// 1e-4), within the tolerance and with no more open edges.
+TEST(EvenColumns, WingTakesGradedColumns) {
+    expectWingTakesFewerWith(&TessellationOptions::gradedColumns, 0.995);
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(FaceErrorBudget, PlanarFaceGetsFewerBoundaryPointsAndStaysWithinTolerance) 
 // splits its side through the circles' own points instead of between them. Its side then has
 // two triangles per chord of a circle: before, the circles carried the chords and the columns
 // both (1,020 triangles in all here; 516 with the columns halved, 392 with even columns, see
-// chooseEvenColumns; the side 198, and 240 with plain halving and no even columns: the circles'
+// evenColumnLines; the side 198, and 240 with plain halving and no even columns: the circles'
 // points lie on the lines the kd-tree halves on, KdTreeAlignedHalving, which plain halving
 // meets where the span borders leave it even; 416 when they took the frame's halvings).
 TEST(FaceErrorBudget, WholeCylinderSplitsThroughItsCirclesPoints) {
