@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -210,6 +211,29 @@ std::vector<std::int64_t> ColumnTest::gradedLines(std::int64_t a, std::int64_t b
     return balanced;
 }
 
+double ColumnTest::gradedCountEstimate(std::int64_t a, std::int64_t b, int k) const {
+    constexpr int kPlaces = 4;
+    const double equal = double(b - a) / k;
+    double count = 0;
+    for (int p = 0; p < kPlaces; ++p) {
+        const double centre = double(a) + (p + 0.5) * double(b - a) / kPlaces;
+        // the widest column around `centre` that settles, inside the interval
+        auto settlesAt = [&](double width) {
+            const double half = std::min({0.5 * width, centre - double(a), double(b) - centre});
+            return columnAndChordsSettle(std::llround(centre - half), std::llround(centre + half));
+        };
+        double settled = 0.5 * equal, failed = 2 * equal;
+        if (!settlesAt(settled)) return std::numeric_limits<double>::infinity();
+        if (settlesAt(failed)) settled = failed;
+        while (failed - settled > equal / 16) {
+            const double middle = 0.5 * (settled + failed);
+            (settlesAt(middle) ? settled : failed) = middle;
+        }
+        count += double(b - a) / kPlaces / settled;
+    }
+    return count;
+}
+
 std::vector<std::int64_t> ColumnTest::greedyLines(std::int64_t a, std::int64_t b, int most) const {
     // a column's end is found to 1/1024 of the interval
     const std::int64_t precision = std::max<std::int64_t>(1, (b - a) >> 10);
@@ -361,8 +385,8 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             continue;
         }
         const int count = fewestColumns(a, b);
-        if (count >= 3 && graded) {
-            // taken where they are fewer than equal ones
+        // searched where the estimate says they may save a column, taken where they do
+        if (count >= 3 && graded && test.gradedCountEstimate(a, b, count) <= count - 1) {
             std::vector<std::int64_t> own = test.gradedLines(a, b, count - 1);
             if (!own.empty()) {
                 lines[i] = std::move(own);
