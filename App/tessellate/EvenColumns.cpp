@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -368,11 +367,6 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
         }
         return 0;
     };
-    auto equal = [&](std::int64_t a, std::int64_t b, int k) {
-        std::vector<std::int64_t> own;
-        for (int c = 0; k >= 2 && c <= k; ++c) own.push_back(KdTreeGrid::columnLine(a, b, k, c));
-        return own;
-    };
     // Graded columns only where the region is the whole box: where trimming curves cross the
     // columns, the kd-tree cuts their cells through the curves' points, wherever the lines
     // fall, and graded columns there took more triangles (the crossed cylinders of
@@ -394,9 +388,9 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             }
         }
         if (count > 0)
-            lines[i] = equal(a, b, count);
+            lines[i] = KdTreeGrid::equalColumnLines(a, b, count);
         else if (cutAcross)
-            lines[i] = equal(a, b, columnsCutAcross(a, b));
+            lines[i] = KdTreeGrid::equalColumnLines(a, b, columnsCutAcross(a, b));
     }
     return lines;
 }

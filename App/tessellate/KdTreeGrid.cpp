@@ -96,9 +96,14 @@ void KdTreeGrid::setEvenColumns(const std::vector<int>& counts) {
     }
     std::vector<std::vector<std::int64_t>> lines(counts.size());
     for (std::size_t i = 0; i < counts.size(); ++i)
-        for (int c = 0; counts[i] >= 2 && c <= counts[i]; ++c)
-            lines[i].push_back(columnLine(borders[i], borders[i + 1], counts[i], c));
+        lines[i] = equalColumnLines(borders[i], borders[i + 1], counts[i]);
     setColumnLines(std::move(lines));
+}
+
+std::vector<std::int64_t> KdTreeGrid::equalColumnLines(std::int64_t a, std::int64_t b, int k) {
+    std::vector<std::int64_t> lines;
+    for (int c = 0; c <= k && k >= 1; ++c) lines.push_back(columnLine(a, b, k, c));
+    return lines;
 }
 
 const std::vector<std::int64_t>& KdTreeGrid::columnLines(std::size_t i) const {

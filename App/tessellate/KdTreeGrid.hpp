@@ -65,6 +65,8 @@ public:
     static std::int64_t columnLine(std::int64_t a, std::int64_t b, int k, int c) {
         return a + std::llround(double(b - a) * c / k);
     }
+    // The k + 1 lines of k equal columns over [a, b], from a to b; none for k < 1.
+    static std::vector<std::int64_t> equalColumnLines(std::int64_t a, std::int64_t b, int k);
     // Where the kd-tree cuts a cell [x0, x1] (frame steps) that lies in one interval of even
     // columns with both sides on its column lines and at least two columns wide: the column
     // line in its middle. None otherwise (the cell is halved).

@@ -567,18 +567,22 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 }
             return chords;
         };
+        std::vector<std::vector<ChordsAlong>> chords(nodes.size());
         forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
+                chords[k] = chordsAlong(f, nodes[k] % 2);
                 lines[k] = evenColumnLines(
                     model.faces[f], *faceLines[f].both(), nodes[k] % 2, faceBudgets[f].surface,
                     options.mode, options.flatCellsByDistance, options.evenColumnsCutAcross,
-                    options.gradedColumns, chordsAlong(f, nodes[k] % 2));
+                    options.gradedColumns, chords[k]);
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
                 lines[k].assign(intervals.size() - 1, {});
             }
         });
+        // each member's column test, made where lines that disagree are merged
+        std::vector<std::unique_ptr<ColumnTest>> tests;
         std::vector<std::vector<std::int64_t>> merged(intervals.size() - 1);
         for (std::size_t i = 0; i < merged.size(); ++i) {
             const std::int64_t a = intervals[i], b = intervals[i + 1];
@@ -587,9 +591,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (const auto& own : lines) {
                 none = none || own[i].empty();
                 agree = agree && own[i] == lines.front()[i];
-                const int count = static_cast<int>(own[i].size()) - 1;
-                for (int c = 0; c <= count && allEqual; ++c)
-                    allEqual = own[i][c] == KdTreeGrid::columnLine(a, b, count, c);
+                allEqual = allEqual && own[i] == KdTreeGrid::equalColumnLines(
+                                                     a, b, static_cast<int>(own[i].size()) - 1);
                 most = std::max(most, own[i].size());
             }
             if (none) continue;
@@ -598,22 +601,18 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 continue;
             }
             if (allEqual) {
-                for (int c = 0; c + 1 < static_cast<int>(most); ++c)
-                    merged[i].push_back(
-                        KdTreeGrid::columnLine(a, b, static_cast<int>(most) - 1, c));
-                merged[i].push_back(b);
+                merged[i] = KdTreeGrid::equalColumnLines(a, b, static_cast<int>(most) - 1);
                 continue;
             }
             std::set<std::int64_t> all;
             for (const auto& own : lines) all.insert(own[i].begin(), own[i].end());
             std::vector<std::int64_t> kept{a};
             std::vector<std::int64_t> candidates(all.begin(), all.end());
-            std::vector<std::unique_ptr<ColumnTest>> tests;
-            for (const int node : nodes)
+            for (std::size_t k = tests.size(); k < nodes.size(); ++k)
                 tests.push_back(std::make_unique<ColumnTest>(
-                    model.faces[node / 2], *faceLines[node / 2].both(), node % 2,
-                    faceBudgets[node / 2].surface, options.mode, options.flatCellsByDistance,
-                    chordsAlong(node / 2, node % 2)));
+                    model.faces[nodes[k] / 2], *faceLines[nodes[k] / 2].both(), nodes[k] % 2,
+                    faceBudgets[nodes[k] / 2].surface, options.mode, options.flatCellsByDistance,
+                    chords[k]));
             for (std::size_t c = 1; c + 1 < candidates.size(); ++c) {
                 const bool mergeable = std::all_of(tests.begin(), tests.end(), [&](const auto& t) {
                     return t->columnAndChordsSettle(kept.back(), candidates[c + 1]);
