@@ -40,6 +40,8 @@ std::vector<std::int64_t> spanBordersInFrame(double low, double scale,
 class KdTreeGrid {
 public:
     KdTreeGrid(double low, double high, const std::vector<double>& breakpoints);
+    // The grid whose step 0 is at `low`, with `scale` steps per unit of the parameter.
+    static KdTreeGrid onFrame(double low, double scale, const std::vector<double>& breakpoints);
 
     // The coarsest line strictly within the middle half of the interval between c0 and c1
     // (either order), as a parameter value: a span border there if any (the one nearest the
@@ -76,6 +78,15 @@ public:
     // same counts.
     bool sameFrame(const KdTreeGrid& other) const {
         return low_ == other.low_ && scale_ == other.scale_ && breaks_ == other.breaks_;
+    }
+    // Whether [low, high] (a face's boundary box along the axis) is this frame's but for less
+    // than a frame step at each end: the boundary's points are evaluated otherwise than the
+    // pcurves' ends the frame was made from, or moved onto their edges' shared points, and may
+    // differ from them in the last bits (FaceTessellator then takes this frame).
+    bool framesWithinAStep(double low, double high) const {
+        const double step = 1 / scale_;
+        return std::abs(low - low_) <= step &&
+               std::abs(high - parameterOf(kKdTreeFrameScale)) <= step;
     }
     double low() const { return low_; }
     double scale() const { return scale_; }

@@ -9,6 +9,7 @@
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -143,14 +144,16 @@ TEST(EvenColumns, ChamferedCylinderSharesItsColumnsWithTheCone) {
 // The same cylinder with its top edge filleted: the side's top circle is straight in the
 // torus's (u, v) too. The torus's columns need cuts across them, more near its rim than near its
 // axis; equal columns meet the rows that need the most (kRowColumnsShare), and the side shares
-// them: 4,548 triangles against 6,130 with halvings (until rows were counted, the two kept
-// their halvings).
+// them: 5,096 triangles against 6,130 with halvings (until rows were counted, the two kept
+// their halvings). 4,548 while the torus's boundary rounded off its columns' frame and it kept
+// halvings around its axis (KdTreeGrid::framesWithinAStep): its rows near the axis need fewer
+// columns than its rim, which equal columns cannot follow.
 TEST(EvenColumns, CylinderSharingACircleWithATorusTakesColumnsCutAcross) {
     const TopoDS_Shape plain = BRepPrimAPI_MakeCylinder(7.5, 3.0).Shape();
     BRepFilletAPI_MakeFillet fillet(plain);
     fillet.Add(1.0, topCircle(plain));
     const auto [even, halved] = trianglesWithAndWithout(fillet.Shape());
-    EXPECT_LT(double(even), 0.8 * double(halved)) << even << " vs " << halved;
+    EXPECT_LT(double(even), 0.85 * double(halved)) << even << " vs " << halved;
 }
 
 // A sphere as FreeCAD's Part.makeSphere(7) makes it (tests/data/freecad_sphere.brep, the
@@ -188,6 +191,35 @@ TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
     BRepAlgoAPI_Fuse fuse(upright, across);
     ASSERT_TRUE(fuse.IsDone());
     const auto [even, halved] = trianglesWithAndWithout(fuse.Shape());
+    EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
+}
+
+// A face's boundary box may differ from the frame of its pcurves' ends, on which its columns
+// were chosen, in the last bits (its points evaluated otherwise, or moved onto their edges'
+// shared points): within a frame step at each end, the face takes that frame (framesWithinAStep)
+// and keeps its columns; beyond, it keeps its own.
+TEST(KdTreeGrid, FramesABoxWithinAStepOfIt) {
+    const double turn = 2 * M_PI;
+    const KdTreeGrid grid(0, turn, {0, M_PI, turn});
+    const double step = 1 / grid.scale();
+    EXPECT_TRUE(grid.framesWithinAStep(0, turn));
+    EXPECT_TRUE(grid.framesWithinAStep(0, std::nextafter(turn, 0.0)));
+    EXPECT_TRUE(grid.framesWithinAStep(1e-30, std::nextafter(turn, 7.0)));
+    EXPECT_TRUE(grid.framesWithinAStep(-0.9 * step, turn + 0.9 * step));
+    EXPECT_FALSE(grid.framesWithinAStep(0, turn - 2 * step));
+    EXPECT_FALSE(grid.framesWithinAStep(2 * step, turn));
+    EXPECT_FALSE(grid.framesWithinAStep(0, 0.5 * turn));
+    // a grid made on the same origin and scale is the same frame
+    EXPECT_TRUE(grid.sameFrame(KdTreeGrid::onFrame(0, grid.scale(), {0, M_PI, turn})));
+    EXPECT_FALSE(grid.sameFrame(KdTreeGrid::onFrame(0, grid.scale(), {0, 3.0, turn})));
+}
+
+// A whole torus (as Part.makeTorus(10, 3), the generated shapes' torus) at relative 1e-3: its
+// boundary's points span a box a bit narrower than its pcurves' ends, and its columns were
+// dropped for that: 4,612 triangles, more than the 4,440 of halvings; now 3,906.
+TEST(EvenColumns, TorusKeepsItsColumnsWhereItsBoundaryRoundsOtherwise) {
+    const TopoDS_Shape torus = BRepPrimAPI_MakeTorus(10, 3).Shape();
+    const auto [even, halved] = trianglesWithAndWithout(torus, 0.037256);
     EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
 }
 
