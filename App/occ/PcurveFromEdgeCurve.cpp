@@ -17,6 +17,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "occ/SurfaceSpanCache.hpp"
+
 namespace nurbslod::occ {
 
 namespace {
@@ -33,18 +35,17 @@ struct SurfaceFirstDerivatives {
 };
 
 // The (u, v) of the surface point nearest to `point`, by Gauss-Newton steps from `start`, where
-// the surface's derivatives are `atStart` (the caller has them already). The adaptor evaluates
-// through its span cache: Geom_BSplineSurface::D1 would redo de Boor's algorithm at every step
-// (40% of a STEP model's import).
-gp_Pnt2d projectNear(const GeomAdaptor_Surface& surface, const gp_Pnt& point, gp_Pnt2d start,
-                     const SurfaceFirstDerivatives& atStart) {
-    const double u0 = surface.FirstUParameter(), u1 = surface.LastUParameter();
-    const double v0 = surface.FirstVParameter(), v1 = surface.LastVParameter();
+// the surface's derivatives are `atStart` (the caller has them already), staying within the
+// parameter box [u0, u1] x [v0, v1]. The derivatives come through a span cache:
+// Geom_BSplineSurface::D1 would redo de Boor's algorithm at every step (40% of a STEP model's
+// import).
+gp_Pnt2d projectNear(const SurfaceSpanCache& surface, double u0, double u1, double v0, double v1,
+                     const gp_Pnt& point, gp_Pnt2d start, const SurfaceFirstDerivatives& atStart) {
     double u = start.X(), v = start.Y();
     for (int iteration = 0; iteration < 50; ++iteration) {
         gp_Pnt p = atStart.point;
         gp_Vec du = atStart.du, dv = atStart.dv;
-        if (iteration > 0) surface.D1(u, v, p, du, dv);
+        if (iteration > 0) surface.firstDerivatives(u, v, p, du, dv);
         const gp_Vec r(p, point);
         const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv);
         const double ru = du.Dot(r), rv = dv.Dot(r);
@@ -64,7 +65,18 @@ gp_Pnt2d projectNear(const GeomAdaptor_Surface& surface, const gp_Pnt& point, gp
         v = nextV;
         if (converged) break;
     }
-    return {u, v};
+    // A foot within rounding of the box's border is on it: an edge along the surface's border
+    // (a seam, a boundary circle) then keeps its parameter exactly, as the tessellator's tests of
+    // loops along a cell's side expect. Which side the steps end on is a matter of the last bits
+    // of the derivatives (generated filleted_box.brep at relative 1e-4: 12,730 triangles without
+    // this, 11,528 with it).
+    auto onBorder = [](double x, double low, double high) {
+        const double within = 1e-12 * (1 + std::abs(low) + std::abs(high));
+        if (std::abs(x - low) <= within) return low;
+        if (std::abs(x - high) <= within) return high;
+        return x;
+    };
+    return {onBorder(u, u0, u1), onBorder(v, v0, v1)};
 }
 
 // The straight B-spline of degree 1 from a at `first` to b at `last`.
@@ -169,6 +181,7 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     surface->Bounds(u0, u1, v0, v1);
     const double reachU = kLargestSlide * (u1 - u0), reachV = kLargestSlide * (v1 - v0);
     const GeomAdaptor_Surface adaptor(surface);
+    const SurfaceSpanCache spans(surface);
     bool slid = false;
     // each round's midpoints are the next round's samples: projected once
     std::unordered_map<double, gp_Pnt2d> projections;
@@ -178,11 +191,11 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         // At a pole (a row of poles collapsed to a point) a projection would slide freely along
         // the row: the guess stays there.
         SurfaceFirstDerivatives atStart;
-        adaptor.D1(start.X(), start.Y(), atStart.point, atStart.du, atStart.dv);
+        spans.firstDerivatives(start.X(), start.Y(), atStart.point, atStart.du, atStart.dv);
         const double shorter = std::min(atStart.du.Magnitude(), atStart.dv.Magnitude());
         const double longer = std::max(atStart.du.Magnitude(), atStart.dv.Magnitude());
         if (!(shorter > kPoleRatio * longer)) return start;
-        const gp_Pnt2d foot = projectNear(adaptor, point, start, atStart);
+        const gp_Pnt2d foot = projectNear(spans, u0, u1, v0, v1, point, start, atStart);
         if (!(std::abs(foot.X() - start.X()) <= reachU && std::abs(foot.Y() - start.Y()) <= reachV))
             slid = true;
         return foot;

@@ -86,5 +86,40 @@ TEST(PcurveFromCurve, CurveInParametersStaysACubic) {
     EXPECT_LE(largestMiss(pcurve, surface, curve, first, last), accuracy);
 }
 
+// A line along the surface's seam (u = u0) and one along its top circle (v = v1), each from a
+// guess a rounding error off: their projections land on the border exactly, not within a bit
+// of it on either side (the tessellator tests loops along a cell's side exactly).
+TEST(PcurveFromCurve, ProjectionsOnTheBorderStayOnIt) {
+    const Cylinder cylinder;
+    const Handle(Geom_BSplineSurface)& surface = cylinder.surface;
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    struct Case {
+        std::function<gp_Pnt2d(double)> uv;
+        int axis;
+        double border;
+    };
+    const Case cases[] = {{[&](double s) { return gp_Pnt2d(u0, s); }, 0, u0},
+                          {[&](double s) { return gp_Pnt2d(s, v1); }, 1, v1}};
+    for (const Case& c : cases) {
+        const double first = c.axis == 0 ? v0 + 1 : cylinder.first;
+        const double last = c.axis == 0 ? v1 - 1 : cylinder.last;
+        auto curve = [&](double s) {
+            const gp_Pnt2d p = c.uv(s);
+            return surface->Value(p.X(), p.Y());
+        };
+        auto guess = [&](double s) {
+            gp_Pnt2d p = c.uv(s);
+            p.SetCoord(c.axis + 1, p.Coord(c.axis + 1) + (c.axis == 0 ? 1e-15 : -1e-15));
+            return p;
+        };
+        const Handle(Geom2d_BSplineCurve) pcurve =
+            occ::pcurveFromCurve(curve, surface, guess, first, last, 1e-6);
+        ASSERT_FALSE(pcurve.IsNull()) << c.axis;
+        for (int i = 1; i <= pcurve->NbPoles(); ++i)
+            EXPECT_EQ(pcurve->Pole(i).Coord(c.axis + 1), c.border) << c.axis << " pole " << i;
+    }
+}
+
 }  // namespace
 }  // namespace nurbslod
