@@ -121,7 +121,7 @@ Handle(Geom2d_BSplineCurve) asLineWherePossible(const Handle(Geom2d_BSplineCurve
 // `within` at 63 evenly spaced parameters between the ends (the middle first: most curves that
 // are not such a line fail there); none otherwise.
 Handle(Geom2d_BSplineCurve)
-    lineThroughEnds(const std::function<gp_Pnt(double)>& curve, const GeomAdaptor_Surface& surface,
+    lineThroughEnds(const std::function<gp_Pnt(double)>& curve, const SurfaceSpanCache& surface,
                     double first, double last, const gp_Pnt2d& a, const gp_Pnt2d& b,
                     double within) {
     if (!(last > first) || !std::isfinite(a.X()) || !std::isfinite(a.Y()) ||
@@ -131,7 +131,7 @@ Handle(Geom2d_BSplineCurve)
     auto mapsOnto = [&](int k) {
         const double s = double(k) / kChecks;
         const gp_Pnt2d uv(a.XY() + s * (b.XY() - a.XY()));
-        return surface.Value(uv.X(), uv.Y()).Distance(curve(first + (last - first) * s)) <= within;
+        return surface.value(uv.X(), uv.Y()).Distance(curve(first + (last - first) * s)) <= within;
     };
     try {
         if (!mapsOnto(kChecks / 2)) return {};
@@ -180,7 +180,6 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     double u0, u1, v0, v1;
     surface->Bounds(u0, u1, v0, v1);
     const double reachU = kLargestSlide * (u1 - u0), reachV = kLargestSlide * (v1 - v0);
-    const GeomAdaptor_Surface adaptor(surface);
     const SurfaceSpanCache spans(surface);
     bool slid = false;
     // each round's midpoints are the next round's samples: projected once
@@ -216,7 +215,7 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     // projections wherever the surface maps it onto the curve, checked at 63 points between
     // them: bottle.brep's import made 206 of its 214 remade pcurves so, bug33398.step's 995 of
     // 1,373, each from 65 or more projections and an interpolant that came out a line anyway.
-    if (const auto line = lineThroughEnds(curve, adaptor, first, last, sampleAt(first),
+    if (const auto line = lineThroughEnds(curve, spans, first, last, sampleAt(first),
                                           sampleAt(last), 1e-4 * accuracy);
         line && !slid)
         return line;
@@ -248,8 +247,8 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         for (int k = 0; k + 1 < count; ++k) {
             const double t = 0.5 * (parameters[k] + parameters[k + 1]);
             const gp_Pnt2d fitted = fittedCurve.Value(t), projected = sampleAt(t);
-            const double miss = adaptor.Value(fitted.X(), fitted.Y())
-                                    .Distance(adaptor.Value(projected.X(), projected.Y()));
+            const double miss = spans.value(fitted.X(), fitted.Y())
+                                    .Distance(spans.value(projected.X(), projected.Y()));
             worst = std::max(worst, miss);
             if (miss > 0.01 * accuracy && t > parameters[k] && t < parameters[k + 1])
                 refined.push_back(t);

@@ -554,19 +554,17 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
         if (grid[1].hasEvenColumns() && grid[1].framesWithinAStep(v0, v1))
             frame_->v0 = grid[1].low(), frame_->scaleV = grid[1].scale();
     }
-    for (const std::int64_t x :
-         spanBordersInFrame(frame_->u0, frame_->scaleU, patches_.breakpointsU()))
-        frame_->breaksX.push_back(static_cast<cInt>(x));
-    for (const std::int64_t y :
-         spanBordersInFrame(frame_->v0, frame_->scaleV, patches_.breakpointsV()))
-        frame_->breaksY.push_back(static_cast<cInt>(y));
+    const std::vector<std::int64_t> borders[2] = {
+        spanBordersInFrame(frame_->u0, frame_->scaleU, patches_.breakpointsU()),
+        spanBordersInFrame(frame_->v0, frame_->scaleV, patches_.breakpointsV())};
+    frame_->breaksX.assign(borders[0].begin(), borders[0].end());
+    frame_->breaksY.assign(borders[1].begin(), borders[1].end());
     if (choices_.evenColumns) {
-        const KdTreeGrid own[2] = {
-            KdTreeGrid::onFrame(frame_->u0, frame_->scaleU, patches_.breakpointsU()),
-            KdTreeGrid::onFrame(frame_->v0, frame_->scaleV, patches_.breakpointsV())};
+        const double low[2] = {frame_->u0, frame_->v0}, scale[2] = {frame_->scaleU, frame_->scaleV};
         for (int axis = 0; axis < 2; ++axis) {
             const KdTreeGrid& grid = (*choices_.evenColumns)[axis];
-            frame_->even[axis] = grid.hasEvenColumns() && grid.sameFrame(own[axis]);
+            frame_->even[axis] =
+                grid.hasEvenColumns() && grid.hasFrame(low[axis], scale[axis], borders[axis]);
         }
     }
 }

@@ -25,13 +25,6 @@ KdTreeGrid::KdTreeGrid(double low, double high, const std::vector<double>& break
       scale_(static_cast<double>(kKdTreeFrameScale) / (high - low)),
       breaks_(spanBordersInFrame(low_, scale_, breakpoints)) {}
 
-KdTreeGrid KdTreeGrid::onFrame(double low, double scale, const std::vector<double>& breakpoints) {
-    KdTreeGrid grid(low, low + 1, {});
-    grid.scale_ = scale;
-    grid.breaks_ = spanBordersInFrame(low, scale, breakpoints);
-    return grid;
-}
-
 std::optional<double> KdTreeGrid::lineWithin(double c0, double c1) const {
     if (c0 > c1) std::swap(c0, c1);
     const double quarter = 0.25 * (c1 - c0);

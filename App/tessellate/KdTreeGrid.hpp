@@ -40,8 +40,6 @@ std::vector<std::int64_t> spanBordersInFrame(double low, double scale,
 class KdTreeGrid {
 public:
     KdTreeGrid(double low, double high, const std::vector<double>& breakpoints);
-    // The grid whose step 0 is at `low`, with `scale` steps per unit of the parameter.
-    static KdTreeGrid onFrame(double low, double scale, const std::vector<double>& breakpoints);
 
     // The coarsest line strictly within the middle half of the interval between c0 and c1
     // (either order), as a parameter value: a span border there if any (the one nearest the
@@ -77,7 +75,12 @@ public:
     // The same frame and span borders as `other`: the same lines, and the same columns for the
     // same counts.
     bool sameFrame(const KdTreeGrid& other) const {
-        return low_ == other.low_ && scale_ == other.scale_ && breaks_ == other.breaks_;
+        return hasFrame(other.low_, other.scale_, other.breaks_);
+    }
+    // Step 0 at `low`, `scale` steps per unit of the parameter and these span borders
+    // (spanBordersInFrame): the same lines, and the same columns for the same counts.
+    bool hasFrame(double low, double scale, const std::vector<std::int64_t>& borders) const {
+        return low_ == low && scale_ == scale && breaks_ == borders;
     }
     // Whether [low, high] (a face's boundary box along the axis) is this frame's but for less
     // than a frame step at each end: the boundary's points are evaluated otherwise than the

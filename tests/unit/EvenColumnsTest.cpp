@@ -209,9 +209,13 @@ TEST(KdTreeGrid, FramesABoxWithinAStepOfIt) {
     EXPECT_FALSE(grid.framesWithinAStep(0, turn - 2 * step));
     EXPECT_FALSE(grid.framesWithinAStep(2 * step, turn));
     EXPECT_FALSE(grid.framesWithinAStep(0, 0.5 * turn));
-    // a grid made on the same origin and scale is the same frame
-    EXPECT_TRUE(grid.sameFrame(KdTreeGrid::onFrame(0, grid.scale(), {0, M_PI, turn})));
-    EXPECT_FALSE(grid.sameFrame(KdTreeGrid::onFrame(0, grid.scale(), {0, 3.0, turn})));
+    // the same origin, scale and span borders are the same frame
+    EXPECT_TRUE(
+        grid.hasFrame(0, grid.scale(), spanBordersInFrame(0, grid.scale(), {0, M_PI, turn})));
+    EXPECT_FALSE(
+        grid.hasFrame(0, grid.scale(), spanBordersInFrame(0, grid.scale(), {0, 3.0, turn})));
+    EXPECT_FALSE(
+        grid.hasFrame(1e-12, grid.scale(), spanBordersInFrame(0, grid.scale(), {0, M_PI, turn})));
 }
 
 // A whole torus (as Part.makeTorus(10, 3), the generated shapes' torus) at relative 1e-3: its
