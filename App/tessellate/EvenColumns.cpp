@@ -40,6 +40,15 @@ constexpr int kRowDepth = 10;
 // well and cost three times the face's tessellation.
 constexpr double kRowColumnsShare = 0.85;
 
+// Counts of equal columns tried above the halvings' P where P's share does not settle, as
+// multiples of P; one is taken where five columns' rows spread over the span make it at most
+// kMoreColumnsThanHalvingsCells of the cells of the best so far (P's estimated the same way).
+// Below 2P only: the kd-tree halves a column's rows, so a count that takes half the rows is
+// found below it (3P and 4P cost the helical sweep at relative 1e-3 80% more instructions and
+// saved nothing). The halvings' rows follow each column's need, so only a clear gain counts.
+constexpr double kMoreColumns[] = {1.25, 1.5, 1.75};
+constexpr double kMoreColumnsThanHalvingsCells = 0.75;
+
 }  // namespace
 
 bool regionIsTheBox(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids) {
@@ -158,24 +167,40 @@ ColumnTest::Verdict ColumnTest::cellVerdict(double c0, double c1, double o0, dou
     return Verdict{bound.measure(mode_, false) <= target_, bound.splitDirection};
 }
 
-// Whether the kd-tree leaves the column [c0, c1] over [o0, o1] whole along the axis: the cell
-// settles, or it is cut across (halving [o0, o1]) and each half does.
-bool ColumnTest::rowsSettle(double c0, double c1, double o0, double o1, int depth) const {
+// The rows the kd-tree cuts the column [c0, c1] over [o0, o1] into, leaving it whole along the
+// axis: 1 where the cell settles, otherwise (cut across, halving [o0, o1]) the halves' rows; -1
+// where it would be cut along the axis, deeper than `depth`, or into more than `most` rows.
+int ColumnTest::rowsOf(double c0, double c1, double o0, double o1, int depth, int most) const {
+    if (most < 1) return -1;
     const Verdict verdict = cellVerdict(c0, c1, o0, o1);
-    if (verdict.settles) return true;
-    if (depth == 0 || verdict.splitDirection == axis_) return false;
+    if (verdict.settles) return 1;
+    if (depth == 0 || verdict.splitDirection == axis_ || most < 2) return -1;
     const double middle = 0.5 * (o0 + o1);
-    return rowsSettle(c0, c1, o0, middle, depth - 1) && rowsSettle(c0, c1, middle, o1, depth - 1);
+    const int low = rowsOf(c0, c1, o0, middle, depth - 1, most - 1);
+    if (low < 0) return -1;
+    const int high = rowsOf(c0, c1, middle, o1, depth - 1, most - low);
+    return high < 0 ? -1 : low + high;
 }
 
-bool ColumnTest::settles(std::int64_t x0, std::int64_t x1, bool byRows) const {
+bool ColumnTest::settles(std::int64_t x0, std::int64_t x1) const {
     const double c0 = grid_.parameterAt(x0), c1 = grid_.parameterAt(x1);
     for (std::size_t j = 0; j + 1 < across_.size(); ++j) {
         const double o0 = other_.parameterAt(across_[j]), o1 = other_.parameterAt(across_[j + 1]);
-        if (byRows ? !rowsSettle(c0, c1, o0, o1, kRowDepth) : !cellVerdict(c0, c1, o0, o1).settles)
-            return false;
+        if (!cellVerdict(c0, c1, o0, o1).settles) return false;
     }
     return true;
+}
+
+int ColumnTest::rowCount(std::int64_t x0, std::int64_t x1, int most) const {
+    const double c0 = grid_.parameterAt(x0), c1 = grid_.parameterAt(x1);
+    int rows = 0;
+    for (std::size_t j = 0; j + 1 < across_.size(); ++j) {
+        const double o0 = other_.parameterAt(across_[j]), o1 = other_.parameterAt(across_[j + 1]);
+        const int spanRows = rowsOf(c0, c1, o0, o1, kRowDepth, most - rows);
+        if (spanRows < 0) return -1;
+        rows += spanRows;
+    }
+    return rows;
 }
 
 double ColumnTest::wholeRatio(std::int64_t a, std::int64_t b) const {
@@ -285,11 +310,10 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     std::vector<std::vector<std::int64_t>> lines(intervals.size() - 1);
     if (!(target > 0)) return lines;
     const ColumnTest test(face, grids, axis, target, mode, flatCellsByDistance, std::move(chords));
-    // whether column c of k equal ones over [a, b] settles over each span across: as one cell,
-    // or (byRows) as the cells the kd-tree cuts it into across
-    auto columnSettles = [&](std::int64_t a, std::int64_t b, int k, int c, bool byRows) {
+    // whether column c of k equal ones over [a, b] settles over each span across as one cell
+    auto columnSettles = [&](std::int64_t a, std::int64_t b, int k, int c) {
         return test.settles(KdTreeGrid::columnLine(a, b, k, c),
-                            KdTreeGrid::columnLine(a, b, k, c + 1), byRows);
+                            KdTreeGrid::columnLine(a, b, k, c + 1));
     };
     // The fewest equal columns of [a, b] that settle as whole cells over each span across, 0
     // where none up to kMostColumns do. The columns of a surface of revolution differ only as
@@ -298,7 +322,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     auto fewestColumns = [&](std::int64_t a, std::int64_t b) {
         auto likelyMeets = [&](int k) {
             for (const int c : {0, k / 2, k - 1})
-                if (!columnSettles(a, b, k, c, false)) return false;
+                if (!columnSettles(a, b, k, c)) return false;
             return true;
         };
         // the bound falls about with the square of a column's width
@@ -318,7 +342,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
         }
         for (; count <= kMostColumns; ++count) {
             bool all = true;
-            for (int c = 0; c < count && all; ++c) all = columnSettles(a, b, count, c, false);
+            for (int c = 0; c < count && all; ++c) all = columnSettles(a, b, count, c);
             if (all) return count;
         }
         return 0;
@@ -338,23 +362,109 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     // relative 1e-3 and 1e-4 these searches took 0.29 s of 2.6 s of tessellation (0.48 s when
     // the five were checked before the count was searched and every cell's bound was made).
     auto columnsCutAcross = [&](std::int64_t a, std::int64_t b) {
-        std::map<std::pair<int, int>, bool> tested;
+        std::map<std::pair<int, int>, int> rowsTested;  // (k, c): its rows, -1 where one fails
+        auto rowsOf = [&](int k, int c) {
+            auto [it, fresh] = rowsTested.try_emplace({k, c}, -1);
+            if (fresh)
+                it->second = test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
+                                           KdTreeGrid::columnLine(a, b, k, c + 1));
+            return it->second;
+        };
         auto meets = [&](int k, std::initializer_list<int> columns) {
-            for (const int c : columns) {
-                auto [it, fresh] = tested.try_emplace({k, c}, false);
-                if (fresh) it->second = columnSettles(a, b, k, c, true);
-                if (!it->second) return false;
-            }
+            for (const int c : columns)
+                if (rowsOf(k, c) < 0) return false;
             return true;
         };
         auto spreadMeet = [&](int k) { return meets(k, {k / 2, 0, k / 4, 3 * k / 4, k - 1}); };
+        // More equal columns than the halvings' P where they take far fewer cells
+        // (kMoreColumnsThanHalvingsCells): a cell's twist term grows with both its sides, and
+        // where the bulge across a column takes most of the target at P columns, the twist is
+        // left little and the rows are many. The loft's smaller side at relative 1e-3 took 8
+        // columns (halvings) of up to 67 rows, 1,072 triangles; 10 columns need about 24 rows
+        // (483 triangles). Cells are estimated from the rows of five columns spread over the
+        // span, as halvings across (the kd-tree's own rows where the other axis has no
+        // columns: where it has, its columns are the rows, and the estimate misjudged them on
+        // the helical sweep, 8,490 -> 12,494 triangles at relative 7.4e-4, when counts that
+        // settle were put to the same test).
+        // The cells of k equal columns (k times the mean rows), infinity where they are not
+        // under `fewerThan`: the middle column is counted first as if every column needed its
+        // rows, and a count stops there or where the rows pass that many.
+        auto cellsOf = [&](int k, double fewerThan) {
+            const double mostRows = 5 * fewerThan / k;
+            int rows = 0;
+            for (const int c : {k / 2, 0, k / 4, 3 * k / 4, k - 1}) {
+                const int left =
+                    static_cast<int>(std::min((c == k / 2 ? 0.2 : 1.0) * mostRows - rows, 1e9));
+                const auto known = rowsTested.find({k, c});
+                const int own = known != rowsTested.end()
+                                    ? known->second
+                                    : test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
+                                                    KdTreeGrid::columnLine(a, b, k, c + 1), left);
+                if (own < 0 || own > left) return std::numeric_limits<double>::infinity();
+                rows += own;
+            }
+            return k * double(rows) / 5;
+        };
+        // The halvings' P columns: a column that the kd-tree would cut along, or that needs
+        // more than twice the middle one's rows, counted as two of the neediest rows among the
+        // others (it becomes two columns; counting its rows to the kd-tree's depth cost more
+        // than the search itself).
+        auto halvingsCells = [&](int k) {
+            const int middle = rowsOf(k, k / 2);
+            int rows = middle, neediest = middle, split = 0;
+            for (const int c : {0, k / 4, 3 * k / 4, k - 1}) {
+                const auto known = rowsTested.find({k, c});
+                const int own =
+                    known != rowsTested.end()
+                        ? known->second
+                        : test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
+                                        KdTreeGrid::columnLine(a, b, k, c + 1), 2 * middle);
+                own < 0 ? ++split : (rows += own, neediest = std::max(neediest, own));
+            }
+            return k * double(rows + 2 * split * neediest) / 5;
+        };
+        // The count to take instead of the halvings' P (whose middle column settles), or P.
+        auto moreColumnsThanHalvings = [&](int power) {
+            // Only where a count's middle column takes fewer rows than all P columns taking
+            // the halvings' middle one's would is the halvings' estimate made (most intervals
+            // stop here: made for every one, it cost the helical sweep at relative 1e-3 a third
+            // more instructions).
+            const double middleOnly = power * double(rowsOf(power, power / 2));
+            bool promising = false;
+            for (const double more : kMoreColumns) {
+                const int k =
+                    std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
+                const int most = static_cast<int>(middleOnly / k);
+                const int rows = test.rowCount(KdTreeGrid::columnLine(a, b, k, k / 2),
+                                               KdTreeGrid::columnLine(a, b, k, k / 2 + 1), most);
+                if ((promising = rows >= 0 && rows < most)) break;
+            }
+            if (!promising) return power;
+            int best = power;
+            double bestCells = halvingsCells(power);
+            for (const double more : kMoreColumns) {
+                const int k =
+                    std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
+                if (k <= best) continue;
+                const double limit = kMoreColumnsThanHalvingsCells * bestCells;
+                const double cells = cellsOf(k, limit);
+                if (cells < limit) best = k, bestCells = cells;
+            }
+            return best;
+        };
         // where halvings need at most 4 columns, equal ones save at most one
         if (meets(4, {2})) return 0;
         int power = 8;
         while (power <= kMostColumnsCutAcross && !meets(power, {power / 2})) power *= 2;
         for (; power <= kMostColumnsCutAcross; power *= 2) {
             const int most = static_cast<int>(kRowColumnsShare * power);
-            if (!meets(most, {most / 2})) return 0;
+            if (!meets(most, {most / 2})) {
+                // the halvings' P columns, unless more equal ones take far fewer cells than P
+                // of the middle one's rows would (the halvings' rows follow each column's need:
+                // only a clear gain counts)
+                const int count = moreColumnsThanHalvings(power);
+                return count == power ? 0 : count;
+            }
             int fails = power / 2, count = most;
             while (count - fails > 1) {
                 const int middle = (fails + count) / 2;
@@ -374,7 +484,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     graded = graded && regionIsTheBox(face, grids);
     for (std::size_t i = 0; i + 1 < intervals.size(); ++i) {
         const std::int64_t a = intervals[i], b = intervals[i + 1];
-        if (columnSettles(a, b, 1, 0, false)) {
+        if (columnSettles(a, b, 1, 0)) {
             lines[i] = {a, b};  // one column
             continue;
         }

@@ -172,11 +172,47 @@ TEST(EvenColumns, SphereTakesColumnsCutAcross) {
 // 59 of the 26 even columns). Cut across first, every column would take the rows the neediest
 // one needs; cut into its columns first, each takes its own (FaceTessellator::findCrossings
 // builds the kd-tree both ways where that order matters, and keeps the one with fewer cells):
-// 2,894 triangles against 4,502 cut across first and 6,788 with halvings.
+// 2,894 triangles against 4,502 cut across first and 6,788 with halvings; 2,238 since its
+// smaller side takes more columns than its halvings' 8 (below).
 TEST(EvenColumns, LoftTakesItsColumnsBeforeTheirRows) {
     const auto [even, halved] = trianglesWithAndWithout(
         occ::readShape(NURBSLOD_TEST_DATA_DIR "/freecad_loft.brep"), 0.035202);
     EXPECT_LT(double(even), 0.5 * double(halved)) << even << " vs " << halved;
+}
+
+// The loft's smaller side at the same tolerance (its surface share 0.03335): the halvings give
+// it 8 columns, the fewest that settle, and the middle one needs 32 rows (67 where the kd-tree
+// made them). A cell's twist grows with both its sides, and at 8 columns the bulge across a
+// column leaves it little of the target; 10 columns need 21 rows, fewer cells by far: 483
+// triangles on the face instead of 1,072 (BRepMesh 674 at that deflection).
+TEST(EvenColumns, LoftTakesMoreColumnsWhereTheyNeedFarFewerRows) {
+    const Model model =
+        occ::importModel(occ::readShape(NURBSLOD_TEST_DATA_DIR "/freecad_loft.brep"));
+    ASSERT_GE(model.faces.size(), 1u);
+    const auto grids = kdTreeLinesBeforeDiscretisation(model.faces[0]).both();
+    ASSERT_TRUE(grids);
+    const double target = 0.03335;
+    const auto lines =
+        evenColumnLines(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed, true, true);
+    ASSERT_EQ(lines.size(), 1u);
+    ASSERT_GE(lines[0].size(), 2u);
+    const int count = static_cast<int>(lines[0].size()) - 1;
+    EXPECT_GT(count, 8);
+    EXPECT_EQ(lines[0], KdTreeGrid::equalColumnLines(0, kKdTreeFrameScale, count));
+    const ColumnTest test(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed, true);
+    auto middleRows = [&](int k) {
+        return test.rowCount(KdTreeGrid::columnLine(0, kKdTreeFrameScale, k, k / 2),
+                             KdTreeGrid::columnLine(0, kKdTreeFrameScale, k, k / 2 + 1));
+    };
+    const int rows = middleRows(count), halvingsRows = middleRows(8);
+    ASSERT_GT(rows, 0);
+    ASSERT_GT(halvingsRows, 0);
+    EXPECT_LT(count * rows, 0.9 * 8 * halvingsRows)
+        << count << " x " << rows << " against 8 x " << halvingsRows;
+    // a row count stops where it passes its most
+    EXPECT_EQ(test.rowCount(KdTreeGrid::columnLine(0, kKdTreeFrameScale, 8, 4),
+                            KdTreeGrid::columnLine(0, kKdTreeFrameScale, 8, 5), halvingsRows - 1),
+              -1);
 }
 
 // Two cylinders fused at right angles (tests/bench/generated_shapes.py's crossed cylinders):
@@ -344,7 +380,7 @@ TEST(EvenColumns, GradedColumnsFollowAnUnevenArc) {
     const ColumnTest test(model.faces[0], *grids, 0, target, ErrorMode::Guaranteed, true);
     for (std::size_t c = 0; c + 1 < lines.size(); ++c) {
         EXPECT_LT(lines[c], lines[c + 1]);
-        EXPECT_TRUE(test.settles(lines[c], lines[c + 1], false)) << "column " << c;
+        EXPECT_TRUE(test.settles(lines[c], lines[c + 1])) << "column " << c;
     }
     const std::size_t middle = (lines.size() - 1) / 2;
     EXPECT_GT(lines[1] - lines[0], lines[middle + 1] - lines[middle]);
