@@ -363,13 +363,16 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     // relative 1e-3 and 1e-4 these searches took 0.29 s of 2.6 s of tessellation (0.48 s when
     // the five were checked before the count was searched and every cell's bound was made).
     auto columnsCutAcross = [&](std::int64_t a, std::int64_t b) {
-        std::map<std::pair<int, int>, int> rowsTested;  // (k, c): its rows, -1 where one fails
-        auto rowsOf = [&](int k, int c) {
-            auto [it, fresh] = rowsTested.try_emplace({k, c}, -1);
-            if (fresh)
-                it->second = test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
-                                           KdTreeGrid::columnLine(a, b, k, c + 1));
-            return it->second;
+        // (k, c): the rows of column c of k, -1 where one fails; a count stopped at a most is
+        // kept only where it finished (then it is the whole count)
+        std::map<std::pair<int, int>, int> rowsTested;
+        auto rowsOf = [&](int k, int c, int most = std::numeric_limits<int>::max()) {
+            if (const auto known = rowsTested.find({k, c}); known != rowsTested.end())
+                return known->second;
+            const int rows = test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
+                                           KdTreeGrid::columnLine(a, b, k, c + 1), most);
+            if (rows >= 0 || most == std::numeric_limits<int>::max()) rowsTested[{k, c}] = rows;
+            return rows;
         };
         auto meets = [&](int k, std::initializer_list<int> columns) {
             for (const int c : columns)
@@ -396,11 +399,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             for (const int c : {k / 2, 0, k / 4, 3 * k / 4, k - 1}) {
                 const int left =
                     static_cast<int>(std::min((c == k / 2 ? 0.2 : 1.0) * mostRows - rows, 1e9));
-                const auto known = rowsTested.find({k, c});
-                const int own = known != rowsTested.end()
-                                    ? known->second
-                                    : test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
-                                                    KdTreeGrid::columnLine(a, b, k, c + 1), left);
+                const int own = rowsOf(k, c, left);
                 if (own < 0 || own > left) return std::numeric_limits<double>::infinity();
                 rows += own;
             }
@@ -414,15 +413,13 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             const int middle = rowsOf(k, k / 2);
             int rows = middle, neediest = middle, split = 0;
             for (const int c : {0, k / 4, 3 * k / 4, k - 1}) {
-                const auto known = rowsTested.find({k, c});
-                const int own =
-                    known != rowsTested.end()
-                        ? known->second
-                        : test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
-                                        KdTreeGrid::columnLine(a, b, k, c + 1), 2 * middle);
+                const int own = rowsOf(k, c, 2 * middle);
                 own < 0 ? ++split : (rows += own, neediest = std::max(neediest, own));
             }
             return k * double(rows + 2 * split * neediest) / 5;
+        };
+        auto moreThan = [&](int power, double more) {
+            return std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
         };
         // The count to take instead of the halvings' P (whose middle column settles), or P.
         auto moreColumnsThanHalvings = [&](int power) {
@@ -433,19 +430,16 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             const double middleOnly = power * double(rowsOf(power, power / 2));
             bool promising = false;
             for (const double more : kMoreColumns) {
-                const int k =
-                    std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
+                const int k = moreThan(power, more);
                 const int most = static_cast<int>(middleOnly / k);
-                const int rows = test.rowCount(KdTreeGrid::columnLine(a, b, k, k / 2),
-                                               KdTreeGrid::columnLine(a, b, k, k / 2 + 1), most);
+                const int rows = rowsOf(k, k / 2, most);
                 if ((promising = rows >= 0 && rows < most)) break;
             }
             if (!promising) return power;
             int best = power;
             double bestCells = halvingsCells(power);
             for (const double more : kMoreColumns) {
-                const int k =
-                    std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
+                const int k = moreThan(power, more);
                 if (k <= best) continue;
                 const double limit = kMoreColumnsThanHalvingsCells * bestCells;
                 const double cells = cellsOf(k, limit);
