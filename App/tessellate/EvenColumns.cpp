@@ -21,9 +21,9 @@ namespace {
 constexpr int kMostColumns = 256;
 
 // At most this many columns a span that the kd-tree cuts across into rows: beyond, halving is
-// as good. Up to 256 the loft of tests/bench/generated_shapes.py took 18,756 triangles instead
-// of 47,520 at relative 1e-4, and twice the instructions; the helical sweep 760 more, a sphere
-// segment 516 more.
+// as good. Up to 256, at relative 1e-4, the loft of tests/bench/generated_shapes.py took 16,336
+// triangles instead of 17,950, but the helical sweep 67,322 instead of 49,244 and the revolved
+// profile 61,975 instead of 56,575.
 constexpr int kMostColumnsCutAcross = 64;
 
 // How many times the kd-tree may halve a column across before the column counts as too wide
@@ -39,16 +39,6 @@ constexpr int kRowDepth = 10;
 // 0.9 took more such losses. Comparing kd-trees simulated both ways, instead, chose about as
 // well and cost three times the face's tessellation.
 constexpr double kRowColumnsShare = 0.85;
-
-// Counts of equal columns tried above the halvings' P where P's share does not settle, as
-// multiples of P; one is taken where five columns' rows spread over the span make it at most
-// kMoreColumnsThanHalvingsCells of the cells of the best so far (P's estimated the same way).
-// Below 2P only: the kd-tree halves a column's rows, so a count that takes half the rows is
-// found below it (with 2P, 3P and 4P too, and every candidate's rows counted in full, the
-// helical sweep at relative 1e-3 took 83% more instructions). The halvings' rows follow each
-// column's need, so only a clear gain counts.
-constexpr double kMoreColumns[] = {1.25, 1.5, 1.75};
-constexpr double kMoreColumnsThanHalvingsCells = 0.75;
 
 }  // namespace
 
@@ -170,16 +160,15 @@ ColumnTest::Verdict ColumnTest::cellVerdict(double c0, double c1, double o0, dou
 
 // The rows the kd-tree cuts the column [c0, c1] over [o0, o1] into, leaving it whole along the
 // axis: 1 where the cell settles, otherwise (cut across, halving [o0, o1]) the halves' rows; -1
-// where it would be cut along the axis, deeper than `depth`, or into more than `most` rows.
-int ColumnTest::rowsOf(double c0, double c1, double o0, double o1, int depth, int most) const {
-    if (most < 1) return -1;
+// where it would be cut along the axis or deeper than `depth`.
+int ColumnTest::rowsOf(double c0, double c1, double o0, double o1, int depth) const {
     const Verdict verdict = cellVerdict(c0, c1, o0, o1);
     if (verdict.settles) return 1;
-    if (depth == 0 || verdict.splitDirection == axis_ || most < 2) return -1;
+    if (depth == 0 || verdict.splitDirection == axis_) return -1;
     const double middle = 0.5 * (o0 + o1);
-    const int low = rowsOf(c0, c1, o0, middle, depth - 1, most - 1);
+    const int low = rowsOf(c0, c1, o0, middle, depth - 1);
     if (low < 0) return -1;
-    const int high = rowsOf(c0, c1, middle, o1, depth - 1, most - low);
+    const int high = rowsOf(c0, c1, middle, o1, depth - 1);
     return high < 0 ? -1 : low + high;
 }
 
@@ -192,12 +181,12 @@ bool ColumnTest::settles(std::int64_t x0, std::int64_t x1) const {
     return true;
 }
 
-int ColumnTest::rowCount(std::int64_t x0, std::int64_t x1, int most) const {
+int ColumnTest::rowCount(std::int64_t x0, std::int64_t x1) const {
     const double c0 = grid_.parameterAt(x0), c1 = grid_.parameterAt(x1);
     int rows = 0;
     for (std::size_t j = 0; j + 1 < across_.size(); ++j) {
         const double o0 = other_.parameterAt(across_[j]), o1 = other_.parameterAt(across_[j + 1]);
-        const int spanRows = rowsOf(c0, c1, o0, o1, kRowDepth, most - rows);
+        const int spanRows = rowsOf(c0, c1, o0, o1, kRowDepth);
         if (spanRows < 0) return -1;
         rows += spanRows;
     }
@@ -363,16 +352,14 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     // relative 1e-3 and 1e-4 these searches took 0.29 s of 2.6 s of tessellation (0.48 s when
     // the five were checked before the count was searched and every cell's bound was made).
     auto columnsCutAcross = [&](std::int64_t a, std::int64_t b) {
-        // (k, c): the rows of column c of k, -1 where one fails; a count stopped at a most is
-        // kept only where it finished (then it is the whole count)
+        // (k, c): the rows of column c of k, -1 where one fails
         std::map<std::pair<int, int>, int> rowsTested;
-        auto rowsOf = [&](int k, int c, int most = std::numeric_limits<int>::max()) {
-            if (const auto known = rowsTested.find({k, c}); known != rowsTested.end())
-                return known->second;
-            const int rows = test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
-                                           KdTreeGrid::columnLine(a, b, k, c + 1), most);
-            if (rows >= 0 || most == std::numeric_limits<int>::max()) rowsTested[{k, c}] = rows;
-            return rows;
+        auto rowsOf = [&](int k, int c) {
+            auto [known, fresh] = rowsTested.try_emplace({k, c}, 0);
+            if (fresh)
+                known->second = test.rowCount(KdTreeGrid::columnLine(a, b, k, c),
+                                              KdTreeGrid::columnLine(a, b, k, c + 1));
+            return known->second;
         };
         auto meets = [&](int k, std::initializer_list<int> columns) {
             for (const int c : columns)
@@ -380,86 +367,13 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             return true;
         };
         auto spreadMeet = [&](int k) { return meets(k, {k / 2, 0, k / 4, 3 * k / 4, k - 1}); };
-        // More equal columns than the halvings' P where they take far fewer cells
-        // (kMoreColumnsThanHalvingsCells): a cell's twist term grows with both its sides, and
-        // where the bulge across a column takes most of the target at P columns, the twist is
-        // left little and the rows are many. The loft's smaller side at relative 1e-3 took 8
-        // columns (halvings) of up to 67 rows, 1,072 triangles; 10 columns need about 24 rows
-        // (483 triangles). Cells are estimated from the rows of five columns spread over the
-        // span, as halvings across (the kd-tree's own rows where the other axis has no
-        // columns: where it has, its columns are the rows, and the estimate misjudged them on
-        // the helical sweep, 8,490 -> 12,494 triangles at relative 7.4e-4, when counts that
-        // settle were put to the same test).
-        // The cells of k equal columns (k times the mean rows), infinity where they are not
-        // under `fewerThan`: the middle column is counted first as if every column needed its
-        // rows, and a count stops there or where the rows pass that many.
-        auto cellsOf = [&](int k, double fewerThan) {
-            const double mostRows = 5 * fewerThan / k;
-            int rows = 0;
-            for (const int c : {k / 2, 0, k / 4, 3 * k / 4, k - 1}) {
-                const int left =
-                    static_cast<int>(std::min((c == k / 2 ? 0.2 : 1.0) * mostRows - rows, 1e9));
-                const int own = rowsOf(k, c, left);
-                if (own < 0 || own > left) return std::numeric_limits<double>::infinity();
-                rows += own;
-            }
-            return k * double(rows) / 5;
-        };
-        // The halvings' P columns: a column that the kd-tree would cut along, or that needs
-        // more than twice the middle one's rows, counted as two of the neediest rows among the
-        // others (it becomes two columns; counting its rows to the kd-tree's depth cost more
-        // than the search itself).
-        auto halvingsCells = [&](int k) {
-            const int middle = rowsOf(k, k / 2);
-            int rows = middle, neediest = middle, split = 0;
-            for (const int c : {0, k / 4, 3 * k / 4, k - 1}) {
-                const int own = rowsOf(k, c, 2 * middle);
-                own < 0 ? ++split : (rows += own, neediest = std::max(neediest, own));
-            }
-            return k * double(rows + 2 * split * neediest) / 5;
-        };
-        auto moreThan = [&](int power, double more) {
-            return std::min(kMostColumnsCutAcross, static_cast<int>(std::ceil(more * power)));
-        };
-        // The count to take instead of the halvings' P (whose middle column settles), or P.
-        auto moreColumnsThanHalvings = [&](int power) {
-            // Only where a count's middle column takes fewer rows than all P columns taking
-            // the halvings' middle one's would is the halvings' estimate made (most intervals
-            // stop here: made for every one, it cost the helical sweep at relative 1e-3 a third
-            // more instructions).
-            const double middleOnly = power * double(rowsOf(power, power / 2));
-            bool promising = false;
-            for (const double more : kMoreColumns) {
-                const int k = moreThan(power, more);
-                const int most = static_cast<int>(middleOnly / k);
-                const int rows = rowsOf(k, k / 2, most);
-                if ((promising = rows >= 0 && rows < most)) break;
-            }
-            if (!promising) return power;
-            int best = power;
-            double bestCells = halvingsCells(power);
-            for (const double more : kMoreColumns) {
-                const int k = moreThan(power, more);
-                if (k <= best) continue;
-                const double limit = kMoreColumnsThanHalvingsCells * bestCells;
-                const double cells = cellsOf(k, limit);
-                if (cells < limit) best = k, bestCells = cells;
-            }
-            return best;
-        };
         // where halvings need at most 4 columns, equal ones save at most one
         if (meets(4, {2})) return 0;
         int power = 8;
         while (power <= kMostColumnsCutAcross && !meets(power, {power / 2})) power *= 2;
         for (; power <= kMostColumnsCutAcross; power *= 2) {
             const int most = static_cast<int>(kRowColumnsShare * power);
-            if (!meets(most, {most / 2})) {
-                // the halvings' P columns, unless more equal ones take far fewer cells than P
-                // of the middle one's rows would (the halvings' rows follow each column's need:
-                // only a clear gain counts)
-                const int count = moreColumnsThanHalvings(power);
-                return count == power ? 0 : count;
-            }
+            if (!meets(most, {most / 2})) return 0;
             int fails = power / 2, count = most;
             while (count - fails > 1) {
                 const int middle = (fails + count) / 2;

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -67,9 +66,8 @@ public:
     bool settles(std::int64_t x0, std::int64_t x1) const;
     // The rows the kd-tree cuts the column [x0, x1] into across, over every span across, where
     // each settles (it halves a cell across while its bound says so, at most kRowDepth times);
-    // -1 where a row does not, or where they are more than `most`.
-    int rowCount(std::int64_t x0, std::int64_t x1,
-                 int most = std::numeric_limits<int>::max()) const;
+    // -1 where a row does not.
+    int rowCount(std::int64_t x0, std::int64_t x1) const;
     // the bound of the first span across over the whole interval [a, b], over the target
     double wholeRatio(std::int64_t a, std::int64_t b) const;
     // whether each edge along the axis is one chord over the column [x0, x1] where it runs
@@ -96,7 +94,7 @@ private:
     struct Verdict;
     BezierPatch cellPiece(double c0, double c1, double o0, double o1) const;
     Verdict cellVerdict(double c0, double c1, double o0, double o1) const;
-    int rowsOf(double c0, double c1, double o0, double o1, int depth, int most) const;
+    int rowsOf(double c0, double c1, double o0, double o1, int depth) const;
     // the greedy columns, none where more than `most`
     std::vector<std::int64_t> greedyLines(std::int64_t a, std::int64_t b, int most) const;
 
@@ -119,9 +117,7 @@ private:
 // cut; none where no count up to 256 does. Where a column would need cuts across it too, and
 // `cutAcross`, the fewest equal ones (up to 64) whose cells meet it once the kd-tree has cut them
 // across into rows, taken only where that count is well under the power of two the halvings give
-// the neediest rows (kRowColumnsShare), or, where that share does not settle, more than that power
-// of two where they take far fewer cells (a twisted surface whose rows the columns' width sets,
-// as a loft's side): the need of such columns differs from row to row (a torus's
+// the neediest rows (kRowColumnsShare): the need of such columns differs from row to row (a torus's
 // columns near its axis need fewer than at its rim), and the kd-tree's halvings follow that where
 // equal columns cannot (bottle.brep at relative 1e-4: a torus with equal columns everywhere took
 // 2,037 triangles instead of 1,758, and the cylinder sharing its circle 434 instead of 282). Faces

@@ -1071,14 +1071,16 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // The bound cuts a cell across its even columns where that is the larger error, and the
     // rows cut so run over all the columns in the cell: each column then takes the rows its
     // neediest neighbour needs. Where a column's rows settle sooner in some columns than in
-    // others (a loft's side, one span of degree 12 around: 16 to 59 rows in its 26 columns),
-    // cutting the columns first lets each take its own; where the columns' need differs from
-    // row to row instead (a sphere's, fewer near its poles), cutting across first does. Where
-    // the order matters, the kd-tree is built both ways and the one with fewer cells kept; the
-    // second build takes the first's bounds of the cells both have (CellDecisions). The 32
-    // models at relative 1e-3 and 1e-4: the loft 4,502 -> 2,894 and 60,604 -> 47,520 triangles,
-    // trj7_b1-ec-214.stp at 1e-4 40,091 -> 40,067, the others unchanged; about 5% more
-    // instructions for a face built twice (the hollow sphere at 1e-4).
+    // others, cutting the columns first lets each take its own; where the columns' need differs
+    // from row to row instead (a sphere's, fewer near its poles), cutting across first does.
+    // Where the order matters, the kd-tree is built both ways and the one with fewer cells
+    // kept; the second build takes the first's bounds of the cells both have (CellDecisions).
+    // The 32 models at relative 1e-3 and 1e-4: the helical sweep of
+    // tests/bench/generated_shapes.py at 1e-3 7,012 -> 4,764 triangles (its side, degree 6
+    // around and 10 along, built twice at about twice the instructions), trj7_b1-ec-214.stp at
+    // 1e-4 39,239 -> 39,213, the others unchanged. (Before the split weighed the net's bends by
+    // the degrees, splitOfNet, the loft's side, degree 12 around and 2 along, was the one that
+    // gained: 4,502 -> 2,894 triangles at 1e-3.)
     CellDecisions decisions;
     decisions.record = frame_->even[0] || frame_->even[1];
     buildKdTree(region, simpleRegion, decisions);

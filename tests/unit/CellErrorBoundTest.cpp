@@ -497,6 +497,54 @@ TEST(CellErrorBound, SaddleKeepsItsTwist) {
     EXPECT_NEAR(bound.untrimmed(), 0.25, 1e-12);
 }
 
+// z = a s (1 - s) + b t (1 - t) over the unit square, as a patch of degree 6 in s and 2 in t:
+// the control points of a quadratic raised to degree d are its blossom at (0, .., 1, ..), so
+// z_i = a (i / d - i (i - 1) / (d (d - 1))) along s, the same along t.
+BezierPatch bulges(double a, double b) {
+    const int m = 6, n = 2;
+    BezierPatch patch(m, n);
+    auto raised = [](double bulge, int k, int d) {
+        return bulge * (double(k) / d - double(k) * (k - 1) / (double(d) * (d - 1)));
+    };
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j)
+            patch.pole(i, j) = HomogeneousPoint3(double(i) / m, double(j) / n,
+                                                 raised(a, i, m) + raised(b, j, n), 1);
+    return patch;
+}
+
+// The surface bulges a / 4 across s and b / 4 across t, but the net's second differences are
+// 2a / (m (m - 1)) and 2b / (n (n - 1)): with a = 4b, a degree-6 net bends a quarter as much
+// along s as a degree-2 net along t, and a split by the plain second differences halved t,
+// where halving s is what lowers the bound. Weighed by m (m - 1) (splitOfNet) the split is
+// along s, and each half's bound is then lower than either half's of the split along t.
+TEST(CellErrorBound, SplitGoesAcrossTheLargerBulgeWhateverTheDegrees) {
+    const BezierPatch patch = bulges(4.0, 1.0);
+    EXPECT_NEAR(patch.point(0.5, 0.25).z() - patch.point(0.5, 0).z(), 0.1875, 1e-12);
+    EXPECT_NEAR(patch.point(0.5, 0).z() - patch.point(0, 0).z(), 1.0, 1e-12);
+    const CellSplit split = preferredSplit(patch);
+    EXPECT_EQ(split.direction, 0);
+    EXPECT_EQ(cellErrorBound(patch, ErrorMode::Guaranteed).splitDirection, 0);
+    auto largestHalf = [&](int direction) {
+        double largest = 0;
+        for (const auto& [low, high] : {std::pair{0.0, 0.5}, std::pair{0.5, 1.0}}) {
+            const BezierPatch half = direction == 0 ? patch.restricted(low, high, 0, 1)
+                                                    : patch.restricted(0, 1, low, high);
+            largest = std::max(largest, cellErrorBound(half, ErrorMode::Guaranteed).untrimmed());
+        }
+        return largest;
+    };
+    EXPECT_LT(largestHalf(0), 0.6 * largestHalf(1)) << largestHalf(0) << " vs " << largestHalf(1);
+    // equal degrees keep the plain second differences: the same bulges on a net of degree 2
+    // both ways are split along s
+    BezierPatch square(2, 2);
+    for (int i = 0; i <= 2; ++i)
+        for (int j = 0; j <= 2; ++j)
+            square.pole(i, j) =
+                HomogeneousPoint3(i / 2.0, j / 2.0, (i == 1 ? 2.0 : 0.0) + (j == 1 ? 0.5 : 0.0), 1);
+    EXPECT_EQ(preferredSplit(square).direction, 0);
+}
+
 }  // namespace
 // The kd-tree splits a cell whose centre is off by more than its target without computing the
 // bound: sound only if that deviation is below every measure, with any subdivision and piece
