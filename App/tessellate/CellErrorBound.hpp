@@ -64,9 +64,8 @@ struct CellErrorBound {
     // linear in s' and t', which a triangle interpolates exactly, and the twist bound holds for
     // s' t' over any triangle in the unit square.
     double pieceFraction = 1;
-    // Preferred split: direction (0 = u, 1 = v) and local position in (0, 1).
+    // Preferred split direction (0 = u, 1 = v); the kd-tree halves the cell in the middle.
     int splitDirection = 0;
-    double splitAt = 0.5;
 
     // Bound for triangles whose corners are cell corners or lie on the cell edges.
     double untrimmed() const { return spreadToEdges + std::min(twist, planarTwist); }
@@ -151,11 +150,8 @@ double centreDeviation(const BezierPatch& patch);
 // within the target (most cells: the kd-tree asks this of every cell it bounds).
 bool centreBeyond(const BezierPatch& patch, double target);
 
-// Where cellErrorBound in mode Guaranteed would split the cell (splitDirection, splitAt).
-struct CellSplit {
-    int direction = 0;
-    double at = 0.5;
-};
-CellSplit preferredSplit(const BezierPatch& patch);
+// The direction in which cellErrorBound in mode Guaranteed would split the cell
+// (splitDirection).
+int preferredSplitDirection(const BezierPatch& patch);
 
 }  // namespace nurbslod

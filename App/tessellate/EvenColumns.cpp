@@ -148,12 +148,11 @@ BezierPatch ColumnTest::cellPiece(double c0, double c1, double o0, double o1) co
 // What the kd-tree decides for the cell [c0, c1] x [o0, o1] (along and across the axis), filled
 // to its sides: whether it settles, and where not, the direction it is cut in. As there, a cell
 // whose centre is off by more than the target is cut without its bound (the costliest part of
-// these searches), in the direction its bound would give in guaranteed mode (the farthest
-// control point's).
+// these searches), in the direction its bound would give in guaranteed mode.
 ColumnTest::Verdict ColumnTest::cellVerdict(double c0, double c1, double o0, double o1) const {
     const BezierPatch piece = cellPiece(c0, c1, o0, o1);
     if (mode_ == ErrorMode::Guaranteed && centreBeyond(piece, target_))
-        return Verdict{false, preferredSplit(piece).direction};
+        return Verdict{false, preferredSplitDirection(piece)};
     const CellErrorBound bound = cellErrorBound(piece, mode_, target_, false, flatCellsByDistance_);
     return Verdict{bound.measure(mode_, false) <= target_, bound.splitDirection};
 }

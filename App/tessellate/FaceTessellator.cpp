@@ -599,12 +599,12 @@ Paths FaceTessellator::regionOf(const std::vector<BoundaryLoop>& loops) const {
 }
 
 // What the bound said of a filled cell (it depends on the cell alone): whether it settles, and
-// where not, how the bound would cut it. The kd-tree built twice (findCrossings) bounds most of
-// its cells once: the two builds differ in their upper cuts only.
+// where not, in which direction the bound would cut it. The kd-tree built twice (findCrossings)
+// bounds most of its cells once: the two builds differ in their upper cuts only.
 struct FaceTessellator::CellDecisions {
     struct Decision {
         bool settles = false;
-        CellSplit preferred;
+        int preferredDirection = 0;
     };
     struct RectHash {
         std::size_t operator()(const std::array<cInt, 4>& key) const {
@@ -787,7 +787,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
         // a cell whose centre is off by more than the target is split whatever its bound
-        CellSplit preferred;
+        int preferredDirection = 0;
         // a trimmed cell whose bound for corners on its sides would do (bandSplit)
         bool sidesWouldDo = false;
         const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
@@ -797,16 +797,16 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                 leaves_[node.index].leaf = true;
                 continue;
             }
-            preferred = known->second.preferred;
+            preferredDirection = known->second.preferredDirection;
         } else if (mode_ == ErrorMode::Guaranteed && centreBeyond(piece, target)) {
-            preferred = preferredSplit(piece);
-            if (node.full && decisions.record) decisions.byRect[key] = {false, preferred};
+            preferredDirection = preferredSplitDirection(piece);
+            if (node.full && decisions.record) decisions.byRect[key] = {false, preferredDirection};
         } else {
             const CellErrorBound bound = cellErrorBound(
                 piece, mode_, target, trimmedCell, choices_.flatCellsByDistance, pieceFraction);
             const bool settles = bound.measure(mode_, trimmedCell) <= target;
             if (node.full && decisions.record)
-                decisions.byRect[key] = {settles, {bound.splitDirection, bound.splitAt}};
+                decisions.byRect[key] = {settles, bound.splitDirection};
             if (settles) {
                 leaves_[node.index].leaf = true;
                 continue;
@@ -825,7 +825,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                         continue;
                     }
                 }
-            preferred = {bound.splitDirection, bound.splitAt};
+            preferredDirection = bound.splitDirection;
             sidesWouldDo = trimmedCell && bound.untrimmed() <= target;
         }
         const bool canU = r.x1 - r.x0 >= 2, canV = r.y1 - r.y0 >= 2;
@@ -841,7 +841,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             if (frame_->even[axis])
                 evenSplits[axis] = (*choices_.evenColumns)[axis].evenSplit(axis == 0 ? r.x0 : r.y0,
                                                                            axis == 0 ? r.x1 : r.y1);
-        int direction = preferred.direction;
+        int direction = preferredDirection;
         // a cell the bound would cut across its even columns, where it holds two or more of
         // them: cut along them instead on the second build (findCrossings)
         if (!evenSplits[direction] && evenSplits[1 - direction]) {
@@ -850,11 +850,9 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         }
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
-        // on that even line, else where the bound says
+        // on that even line, else in the middle (splitDirectionOfNet)
         const std::optional<std::int64_t>& even = evenSplits[direction];
-        const cInt at = even ? static_cast<cInt>(*even)
-                             : std::clamp<cInt>(lo + std::llround(preferred.at * double(hi - lo)),
-                                                lo + 1, hi - 1);
+        const cInt at = even ? static_cast<cInt>(*even) : lo + (hi - lo + 1) / 2;
         if (sidesWouldDo && choices_.filledCellsBySides && choices_.splitThroughBoundaryPoints)
             if (const auto band = bandSplit(*node.region, r)) {
                 split(band->first, band->second);

@@ -168,13 +168,13 @@ TEST(EvenColumns, SphereTakesColumnsCutAcross) {
 
 // A loft through a circle, an ellipse and a tilted circle as FreeCAD's Part.makeLoft makes it
 // (tests/bench/generated_shapes.py's loft), at relative 1e-3: its faces are single spans of
-// degree 12 around and 2 along. Even columns: 1,734 triangles against 2,134 with halvings. Its
+// degree 12 around and 2 along. Even columns: 1,734 triangles against 1,914 with halvings. Its
 // smaller side (surface share 0.03335) takes the fewest equal columns whose middle one the
 // kd-tree cuts across only: 13, of 16 rows; with 12 its bound would cut a cell of it along.
 TEST(EvenColumns, LoftTakesEvenColumns) {
     const TopoDS_Shape shape = occ::readShape(NURBSLOD_TEST_DATA_DIR "/freecad_loft.brep");
     const auto [even, halved] = trianglesWithAndWithout(shape, 0.035202);
-    EXPECT_LT(double(even), 0.9 * double(halved)) << even << " vs " << halved;
+    EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
     const Model model = occ::importModel(shape);
     ASSERT_GE(model.faces.size(), 1u);
     const auto grids = kdTreeLinesBeforeDiscretisation(model.faces[0]).both();
@@ -266,12 +266,13 @@ void expectWingTakesFewerWith(bool TessellationOptions::*option, double share) {
 }
 
 // wing.brep's four faces each have a free edge: their cells at it are bounded as trimmed
-// (CellChoices::filledCellsBySides) and split further within the columns, but the columns
-// still beat halvings in guaranteed mode. At relative 1e-3: 687 triangles against 857, and
-// no more open edges (35 against 37; BRepMesh 50). At 1e-4 each face, one long span, takes 65
-// to 108 columns (kMostColumns): 6,557 triangles against 7,792.
+// (CellChoices::filledCellsBySides) and split further within the columns, and the columns
+// take no more triangles than halvings in guaranteed mode. At relative 1e-3: 647 triangles
+// against 663, and no more open edges (35 each; BRepMesh 50). At 1e-4 each face, one long
+// span, takes 65 to 108 columns (kMostColumns): 6,529 triangles against 6,608. Halvings took
+// 857 and 7,792 while the kd-tree cut through the farthest control point (splitDirectionOfNet).
 TEST(EvenColumns, FacesWithFreeEdgesTakeThemToo) {
-    expectWingTakesFewerWith(&TessellationOptions::evenColumns, 0.9);
+    expectWingTakesFewerWith(&TessellationOptions::evenColumns, 1.0);
 }
 
 // Graded column lines: the kd-tree splits a cell of several columns at its middle line by
