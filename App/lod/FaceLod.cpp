@@ -112,6 +112,7 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         options.freeEdgesTakeSurfaceShare = false;  // the face alone: its edges are not free
         options.flatCellsByDistance = false;        // normals are measured at equal parameters
         options.evenColumnsCutAcross = false;       // its normal bound was measured on halvings
+        options.middleSplits = false;               // and on the paper's cuts
         TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;

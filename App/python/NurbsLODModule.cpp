@@ -290,9 +290,11 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
         // parameters, not the distance bounds (flat cells, the even-speed parameter), under
         // which a cell of a G2 joint's patch grew wide enough to kink its zebra stripes by 15
         // degrees. For the same reason they keep the halvings where columns are cut across
-        // (the G2 joint's zebra stripes kinked by 11.7 degrees with even columns there).
+        // (the G2 joint's zebra stripes kinked by 11.7 degrees with even columns there), and
+        // the paper's cuts through the farthest net point (13.2 degrees with middle halvings).
         options.flatCellsByDistance = false;
         options.evenColumnsCutAcross = false;
+        options.middleSplits = false;
         result = tessellateModel(model, options);
         analysis = analysisMesh(model, result.mesh);
     }

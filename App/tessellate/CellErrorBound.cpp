@@ -257,8 +257,10 @@ double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, co
 // weighed: the loft of tests/bench/generated_shapes.py (degree 12 around, 2 along) bends 36
 // times more around than its net says, and was halved along, where its cells' bound was already
 // met along and a halving around would have settled them (47,520 triangles at relative 1e-4).
-int splitDirectionOfNet(const std::vector<Point3>& net, int m, int n, const Point3& c00,
-                        const Point3& c10, const Point3& c01, const Point3& c11) {
+struct NetBends {
+    double u = 0, v = 0;
+};
+NetBends netBends(const std::vector<Point3>& net, int m, int n) {
     double bendU = 0, bendV = 0;
     for (int i = 1; i < m; ++i)
         for (int j = 0; j <= n; ++j)
@@ -274,6 +276,12 @@ int splitDirectionOfNet(const std::vector<Point3>& net, int m, int n, const Poin
         bendU *= m * (m - 1.0);
         bendV *= n * (n - 1.0);
     }
+    return {bendU, bendV};
+}
+
+int splitDirectionOfNet(const std::vector<Point3>& net, int m, int n, const Point3& c00,
+                        const Point3& c10, const Point3& c01, const Point3& c11) {
+    const auto [bendU, bendV] = netBends(net, m, n);
     if (bendU == 0 && bendV == 0) {
         // only twist: split the longer side in the middle
         const double lengthU = ((c10 - c00).norm() + (c11 - c01).norm());
@@ -551,6 +559,27 @@ int preferredSplitDirection(const BezierPatch& patch) {
         for (int j = 0; j <= n; ++j) net[i * (n + 1) + j] = patch.pole3(i, j);
     const Point3 c00 = net[0], c10 = net[m * (n + 1)], c01 = net[n], c11 = net[m * (n + 1) + n];
     return splitDirectionOfNet(net, m, n, c00, c10, c01, c11);
+}
+
+double farthestNetPointAt(const BezierPatch& patch, int direction) {
+    const int m = patch.degreeU(), n = patch.degreeV();
+    thread_local std::vector<Point3> net;
+    net.resize(static_cast<size_t>((m + 1) * (n + 1)));
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) net[i * (n + 1) + j] = patch.pole3(i, j);
+    const NetBends bends = netBends(net, m, n);
+    if (bends.u == 0 && bends.v == 0) return 0.5;
+    const Point3 c00 = net[0], c10 = net[m * (n + 1)], c01 = net[n], c11 = net[m * (n + 1) + n];
+    double farthest = -1;
+    int farI = 0, farJ = 0;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const double s = static_cast<double>(i) / m, t = static_cast<double>(j) / n;
+            const double d = (net[i * (n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm();
+            if (d > farthest) farthest = d, farI = i, farJ = j;
+        }
+    if (direction == 0) return farI > 0 && farI < m ? static_cast<double>(farI) / m : 0.5;
+    return farJ > 0 && farJ < n ? static_cast<double>(farJ) / n : 0.5;
 }
 
 }  // namespace nurbslod

@@ -153,5 +153,9 @@ bool centreBeyond(const BezierPatch& patch, double target);
 // The direction in which cellErrorBound in mode Guaranteed would split the cell
 // (splitDirection).
 int preferredSplitDirection(const BezierPatch& patch);
+// Where the paper (section 5.2, Fig. 3) cuts the cell in `direction`: through the control point
+// farthest from the bilinear patch of the corners, as a local position in (0, 1), or the middle
+// where that point lies on the cell's border in that direction or the net does not bend.
+double farthestNetPointAt(const BezierPatch& patch, int direction);
 
 }  // namespace nurbslod

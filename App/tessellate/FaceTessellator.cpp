@@ -850,9 +850,16 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         }
         if ((direction == 0 && !canU) || (direction == 1 && !canV)) direction = 1 - direction;
         const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
-        // on that even line, else in the middle (splitDirectionOfNet)
+        // on that even line, else in the middle (splitDirectionOfNet) or through the farthest net
+        // point
         const std::optional<std::int64_t>& even = evenSplits[direction];
-        const cInt at = even ? static_cast<cInt>(*even) : lo + (hi - lo + 1) / 2;
+        const cInt at =
+            even ? static_cast<cInt>(*even)
+            : choices_.middleSplits
+                ? lo + (hi - lo + 1) / 2
+                : std::clamp<cInt>(lo + std::llround(farthestNetPointAt(piece, preferredDirection) *
+                                                     double(hi - lo)),
+                                   lo + 1, hi - 1);
         if (sidesWouldDo && choices_.filledCellsBySides && choices_.splitThroughBoundaryPoints)
             if (const auto band = bandSplit(*node.region, r)) {
                 split(band->first, band->second);

@@ -27,6 +27,7 @@ struct CellChoices {
     // TessellationOptions' choices of the same names
     bool splitThroughBoundaryPoints = true;
     bool flatCellsByDistance = true;
+    bool middleSplits = true;
     // A cell the region fills exactly (its boundary along the cell's sides) takes the bound
     // for corners on its sides. Not on a face with free edges: the points its cells leave
     // on their chords are dropped where the triangles change little

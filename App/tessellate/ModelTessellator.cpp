@@ -1185,6 +1185,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             CellChoices choices;
             choices.splitThroughBoundaryPoints = options.splitThroughBoundaryPoints;
             choices.flatCellsByDistance = options.flatCellsByDistance;
+            choices.middleSplits = options.middleSplits;
             choices.filledCellsBySides = !hasFreeEdge(f);
             if (hasEvenColumns(f)) choices.evenColumns = faceLines[f].both();
             tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f],
