@@ -250,7 +250,8 @@ double planarTwistOf(const Point3& c00, const Point3& c10, const Point3& c01, co
 // of it, and the bound, which falls with the square of the side, is then 4/9 of the cell's on
 // the larger piece against 1/4 on either half. A cell within 4 times its target settles in two
 // halves and needed three pieces or more at 1/3 (bug28366_fuselage.stp at relative 1e-4:
-// 20,438 -> 14,256 triangles).
+// 20,438 -> 14,256 triangles). The display and the analysis overlays keep the paper's cut
+// (farthestNetPointAt, TessellationOptions::middleSplits): their normal bounds were measured on it.
 // A net's second differences are a degree's m (m - 1) times smaller than the bulge they make:
 // the curve's second derivative is m (m - 1) times them over the interval squared (NURBS Book
 // eq. 2.9 twice), and the bulge an eighth of it. Where the degrees differ the bends are so

@@ -64,7 +64,8 @@ struct CellErrorBound {
     // linear in s' and t', which a triangle interpolates exactly, and the twist bound holds for
     // s' t' over any triangle in the unit square.
     double pieceFraction = 1;
-    // Preferred split direction (0 = u, 1 = v); the kd-tree halves the cell in the middle.
+    // Preferred split direction (0 = u, 1 = v); the kd-tree halves the cell in the middle, or
+    // cuts it at farthestNetPointAt where TessellationOptions::middleSplits is off.
     int splitDirection = 0;
 
     // Bound for triangles whose corners are cell corners or lie on the cell edges.
