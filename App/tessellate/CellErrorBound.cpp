@@ -298,15 +298,21 @@ Point3 bilinearAt(const Point3& c00, const Point3& c10, const Point3& c01, const
     return (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
 }
 
-// The largest distance of a net point from the bilinear patch of the corners.
-double farthestFromBilinear(const std::vector<Point3>& net, int m, int n, const Point3& c00,
-                            const Point3& c10, const Point3& c01, const Point3& c11) {
-    double farthest = 0;
+// The net point farthest from the bilinear patch of the corners (the first of equals), and
+// its distance.
+struct FarthestNetPoint {
+    double distance = -1;
+    int i = 0, j = 0;
+};
+FarthestNetPoint farthestFromBilinear(const std::vector<Point3>& net, int m, int n,
+                                      const Point3& c00, const Point3& c10, const Point3& c01,
+                                      const Point3& c11) {
+    FarthestNetPoint farthest;
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) {
             const double s = static_cast<double>(i) / m, t = static_cast<double>(j) / n;
-            farthest = std::max(
-                farthest, (net[i * (n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm());
+            const double d = (net[i * (n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm();
+            if (d > farthest.distance) farthest = {d, i, j};
         }
     return farthest;
 }
@@ -398,7 +404,8 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                 const double t = static_cast<double>(j) / (2 * n);
                 between = std::max(between, (samples[i * (2 * n + 1) + j] - bilinear(s, t)).norm());
             }
-        bound.interior = std::max(farthestFromBilinear(net, m, n, c00, c10, c01, c11), between);
+        bound.interior =
+            std::max(farthestFromBilinear(net, m, n, c00, c10, c01, c11).distance, between);
         // The same samples under the even-speed parameter (as the bound below takes it): where
         // the parameter runs unevenly along the surface, the samples' drift within the surface
         // is most of their distance to the bilinear patch, and the triangles do not see it.
@@ -552,35 +559,38 @@ bool centreBeyond(const BezierPatch& patch, double target) {
     return centre.deviation > target && evenCentreDeviation(patch, centre.bilinear) > target;
 }
 
-int preferredSplitDirection(const BezierPatch& patch) {
+namespace {
+
+// The patch's control points, projected, at i * (n + 1) + j: the net both split helpers read.
+// One buffer per thread, valid until the next call.
+const std::vector<Point3>& poleNet(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
     thread_local std::vector<Point3> net;
     net.resize(static_cast<size_t>((m + 1) * (n + 1)));
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j) net[i * (n + 1) + j] = patch.pole3(i, j);
+    return net;
+}
+
+}  // namespace
+
+int preferredSplitDirection(const BezierPatch& patch) {
+    const int m = patch.degreeU(), n = patch.degreeV();
+    const std::vector<Point3>& net = poleNet(patch);
     const Point3 c00 = net[0], c10 = net[m * (n + 1)], c01 = net[n], c11 = net[m * (n + 1) + n];
     return splitDirectionOfNet(net, m, n, c00, c10, c01, c11);
 }
 
 double farthestNetPointAt(const BezierPatch& patch, int direction) {
     const int m = patch.degreeU(), n = patch.degreeV();
-    thread_local std::vector<Point3> net;
-    net.resize(static_cast<size_t>((m + 1) * (n + 1)));
-    for (int i = 0; i <= m; ++i)
-        for (int j = 0; j <= n; ++j) net[i * (n + 1) + j] = patch.pole3(i, j);
+    const std::vector<Point3>& net = poleNet(patch);
     const NetBends bends = netBends(net, m, n);
     if (bends.u == 0 && bends.v == 0) return 0.5;
     const Point3 c00 = net[0], c10 = net[m * (n + 1)], c01 = net[n], c11 = net[m * (n + 1) + n];
-    double farthest = -1;
-    int farI = 0, farJ = 0;
-    for (int i = 0; i <= m; ++i)
-        for (int j = 0; j <= n; ++j) {
-            const double s = static_cast<double>(i) / m, t = static_cast<double>(j) / n;
-            const double d = (net[i * (n + 1) + j] - bilinearAt(c00, c10, c01, c11, s, t)).norm();
-            if (d > farthest) farthest = d, farI = i, farJ = j;
-        }
-    if (direction == 0) return farI > 0 && farI < m ? static_cast<double>(farI) / m : 0.5;
-    return farJ > 0 && farJ < n ? static_cast<double>(farJ) / n : 0.5;
+    const FarthestNetPoint farthest = farthestFromBilinear(net, m, n, c00, c10, c01, c11);
+    if (direction == 0)
+        return farthest.i > 0 && farthest.i < m ? static_cast<double>(farthest.i) / m : 0.5;
+    return farthest.j > 0 && farthest.j < n ? static_cast<double>(farthest.j) / n : 0.5;
 }
 
 }  // namespace nurbslod
