@@ -593,4 +593,29 @@ double farthestNetPointAt(const BezierPatch& patch, int direction) {
     return farthest.j > 0 && farthest.j < n ? static_cast<double>(farthest.j) / n : 0.5;
 }
 
+int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
+                           bool byDistance, double pieceFraction) {
+    if (centreDeviation(patch) > 4 * target) return preferred;
+    auto halves = [&](int direction) {
+        return direction == 0
+                   ? std::array{patch.restricted(0, 0.5, 0, 1), patch.restricted(0.5, 1, 0, 1)}
+                   : std::array{patch.restricted(0, 1, 0, 0.5), patch.restricted(0, 1, 0.5, 1)};
+    };
+    // as the kd-tree would find it of the half (a centre beyond the target is not bounded)
+    auto settles = [&](const BezierPatch& half) {
+        return !centreBeyond(half, target) &&
+               cellErrorBound(half, ErrorMode::Guaranteed, target, trimmedCell, byDistance,
+                              pieceFraction)
+                       .measure(ErrorMode::Guaranteed, trimmedCell) <= target;
+    };
+    // the other halving's centres first: most cells fail there, before any bound is computed
+    const int other = 1 - preferred;
+    const auto otherHalves = halves(other);
+    if (centreBeyond(otherHalves[0], target) || centreBeyond(otherHalves[1], target))
+        return preferred;
+    const auto preferredHalves = halves(preferred);
+    if (settles(preferredHalves[0]) && settles(preferredHalves[1])) return preferred;
+    return settles(otherHalves[0]) && settles(otherHalves[1]) ? other : preferred;
+}
+
 }  // namespace nurbslod

@@ -159,4 +159,16 @@ int preferredSplitDirection(const BezierPatch& patch);
 // where that point lies on the cell's border in that direction or the net does not bend.
 double farthestNetPointAt(const BezierPatch& patch, int direction);
 
+// The direction to halve a cell in mode Guaranteed: the one the bound prefers (`preferred`), or
+// the other where halving in the preferred direction leaves a half above `target` and halving in
+// the other settles both halves (each half bounded as cellErrorBound does with the other
+// arguments). A cell whose bound is larger along one direction (a parameter running unevenly
+// along a straight line: bug28366_fuselage.stp's long span) while its surface bends along the
+// other settles in two pieces where the preferred halving needed three or more. Only cells
+// within 4 target at the centre are tried: halving a side quarters the bilinear deviation (the
+// bound of section 5.2 falls with the square of the side), so the halves of a cell farther off
+// hardly settle, and the test costs four patch restrictions and up to four bounds.
+int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
+                           bool byDistance, double pieceFraction);
+
 }  // namespace nurbslod

@@ -834,6 +834,17 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             leaves_[node.index].leaf = true;
             continue;
         }
+        // the other halving where it settles both halves and the bound's does not (the
+        // command line's meshes; the display's keep the paper's cut). The second build (even
+        // columns) reads the direction from the decisions.
+        if (mode_ == ErrorMode::Guaranteed && choices_.middleSplits && canU && canV &&
+            known == decisions.byRect.end()) {
+            preferredDirection =
+                settlingSplitDirection(piece, preferredDirection, target, trimmedCell,
+                                       choices_.flatCellsByDistance, pieceFraction);
+            if (node.full && decisions.record)
+                decisions.byRect[key].preferredDirection = preferredDirection;
+        }
         // each axis's even columns' middle line where the cell holds two or more (the lines its
         // edges' points were put on)
         std::optional<std::int64_t> evenSplits[2];
