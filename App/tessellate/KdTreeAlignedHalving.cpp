@@ -11,6 +11,13 @@ std::optional<std::array<KdTreeGrid, 2>> FaceKdTreeLines::both() const {
     return std::array<KdTreeGrid, 2>{*axes[0], *axes[1]};
 }
 
+std::optional<std::array<KdTreeGrid, 2>> FaceKdTreeLines::forColumns() const {
+    const auto& u = axes[0] ? axes[0] : hull[0];
+    const auto& v = axes[1] ? axes[1] : hull[1];
+    if ((!axes[0] && !axes[1]) || !u || !v) return std::nullopt;
+    return std::array<KdTreeGrid, 2>{*u, *v};
+}
+
 FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
     constexpr double kMax = std::numeric_limits<double>::max();
     Point2 low{kMax, kMax}, high{-kMax, -kMax};
@@ -27,6 +34,8 @@ FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
     lines.extent = {high.x() - low.x(), high.y() - low.y()};
     const Point2 slack = 1e-12 * (high - low);
     std::array<bool, 2> inside{high.x() > low.x(), high.y() > low.y()};
+    Point2 hullLow = low, hullHigh = high;
+    bool hullFinite = true;
     for (const auto& loop : face.loops)
         for (const auto& curve : loop.curves)
             for (const auto& pole : curve.pcurve.poles()) {
@@ -35,11 +44,26 @@ FaceKdTreeLines kdTreeLinesBeforeDiscretisation(const TrimmedSurface& face) {
                 for (int axis = 0; axis < 2; ++axis)
                     inside[axis] = inside[axis] && p[axis] >= low[axis] - slack[axis] &&
                                    p[axis] <= high[axis] + slack[axis];
+                hullFinite = hullFinite && p.allFinite();
+                hullLow = hullLow.cwiseMin(p), hullHigh = hullHigh.cwiseMax(p);
             }
-    if (inside[0])
-        lines.axes[0] = KdTreeGrid(low.x(), high.x(), face.surface.knotsU().breakpoints());
-    if (inside[1])
-        lines.axes[1] = KdTreeGrid(low.y(), high.y(), face.surface.knotsV().breakpoints());
+    const std::vector<double> breakpoints[2] = {face.surface.knotsU().breakpoints(),
+                                                face.surface.knotsV().breakpoints()};
+    for (int axis = 0; axis < 2; ++axis) {
+        if (inside[axis]) {
+            lines.axes[axis] = KdTreeGrid(low[axis], high[axis], breakpoints[axis]);
+            continue;
+        }
+        // The region lies on the surface: the hull's box is cut to its domain. Only where a
+        // curve bulges past the ends' box by more than a narrow band of it (FaceKdTreeLines::
+        // hull): a sloppy side a hair off its iso-line leaves the face's cells to its halvings,
+        // as before (with any bulge, 130 faces of trj7_b1-ec-214.stp took columns, 34,843 ->
+        // 35,175 triangles at relative 1e-4, bottle.brep 22,336 -> 22,658).
+        const double from = std::max(hullLow[axis], breakpoints[axis].front());
+        const double to = std::min(hullHigh[axis], breakpoints[axis].back());
+        if (hullFinite && to - from > (1 + kNarrowBand) * (high[axis] - low[axis]))
+            lines.hull[axis] = KdTreeGrid(from, to, breakpoints[axis]);
+    }
     return lines;
 }
 

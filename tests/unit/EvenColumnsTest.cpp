@@ -198,7 +198,8 @@ TEST(EvenColumns, LoftTakesEvenColumns) {
 // Two cylinders fused at right angles (tests/bench/generated_shapes.py's crossed cylinders):
 // the larger one has two holes where the other meets it, so its region is not its frame's box,
 // but it covers 0.88 of it (kEvenColumnsRegionShare): it takes even columns too, and its circles
-// carry fewer points: 1,808 triangles against 1,988 with halvings.
+// carry fewer points: 1,808 triangles against 1,988 with halvings (1,772 since the smaller one
+// takes columns too: CylinderCutByAnotherTakesColumnsAroundItsAxis).
 TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
     const TopoDS_Shape upright =
         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -15), gp_Dir(0, 0, 1)), 5, 30).Shape();
@@ -208,6 +209,45 @@ TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
     ASSERT_TRUE(fuse.IsDone());
     const auto [even, halved] = trianglesWithAndWithout(fuse.Shape());
     EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
+}
+
+// The same crossed cylinders at relative 1e-3 (T = 0.04359): the smaller one is two faces, each
+// between its end circle and the curve where the larger meets it, which bulges past its ends
+// along the axis. Its columns around are known from the circle, its rows wait for the boundary's
+// points; the columns are tested over the box of its curves' control points along the axis
+// (FaceKdTreeLines::hull) and are no longer halvings: 560 triangles against 632 (its end discs,
+// which take the circles' points, 28 each against 46; BRepMesh_IncrementalMesh 416, discs 29).
+TEST(EvenColumns, CylinderCutByAnotherTakesColumnsAroundItsAxis) {
+    const TopoDS_Shape upright =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -15), gp_Dir(0, 0, 1)), 5, 30).Shape();
+    const TopoDS_Shape across =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-15, 0, 0), gp_Dir(1, 0, 0)), 4, 30).Shape();
+    BRepAlgoAPI_Fuse fuse(upright, across);
+    ASSERT_TRUE(fuse.IsDone());
+    const Model model = occ::importModel(fuse.Shape());
+    int hullFramed = 0;
+    for (const TrimmedSurface& face : model.faces) {
+        const FaceKdTreeLines lines = kdTreeLinesBeforeDiscretisation(face);
+        if (lines.both() || !lines.forColumns()) continue;
+        ++hullFramed;
+        // the known axis runs around (the circle's), the hull's along the axis
+        const int known = lines.axes[0] ? 0 : 1;
+        ASSERT_TRUE(lines.hull[1 - known]);
+        const auto columns = evenColumnLines(face, *lines.forColumns(), known, 0.6 * 0.04359,
+                                             ErrorMode::Guaranteed, true, true);
+        // three 120-degree spans of the circle's rational form, each cut into columns
+        ASSERT_EQ(columns.size(), 3u);
+        for (const auto& span : columns) EXPECT_GE(span.size(), 3u);
+    }
+    EXPECT_EQ(hullFramed, 2);
+    TessellationOptions options;
+    options.tolerance = 0.04359;
+    const auto result = tessellateModel(model, options);
+    EXPECT_TRUE(result.failures.empty());
+    const auto report = occ::verifyMesh(fuse.Shape(), result.mesh, options.tolerance);
+    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
+    EXPECT_EQ(report.openEdges, 0u);
+    EXPECT_LT(result.mesh.triangles.size(), 600u);
 }
 
 // A face's boundary box may differ from the frame of its pcurves' ends, on which its columns

@@ -112,7 +112,7 @@ protected:
                                 bool onLines = true) {
         const std::vector<CurveOnSurface> curve{CurveOnSurface(surface, pcurve, 0, 1)};
         const std::optional<FaceKdTreeLines> lines =
-            grids ? std::optional(FaceKdTreeLines{{(*grids)[0], (*grids)[1]}, {1, 1}})
+            grids ? std::optional(FaceKdTreeLines{{(*grids)[0], (*grids)[1]}, {1, 1}, {}})
                   : std::nullopt;
         const std::vector<double> params =
             onLines
