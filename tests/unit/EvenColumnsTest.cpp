@@ -195,19 +195,23 @@ TEST(EvenColumns, LoftTakesEvenColumns) {
     EXPECT_EQ(middleRows(count - 1), -1);
 }
 
-// Two cylinders fused at right angles (tests/bench/generated_shapes.py's crossed cylinders):
-// the larger one has two holes where the other meets it, so its region is not its frame's box,
-// but it covers 0.88 of it (kEvenColumnsRegionShare): it takes even columns too, and its circles
-// carry fewer points: 1,808 triangles against 1,988 with halvings (1,772 since the smaller one
-// takes columns too: CylinderCutByAnotherTakesColumnsAroundItsAxis).
-TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
+// Two cylinders fused at right angles, as tests/bench/generated_shapes.py's crossed cylinders.
+TopoDS_Shape crossedCylinders() {
     const TopoDS_Shape upright =
         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -15), gp_Dir(0, 0, 1)), 5, 30).Shape();
     const TopoDS_Shape across =
         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-15, 0, 0), gp_Dir(1, 0, 0)), 4, 30).Shape();
     BRepAlgoAPI_Fuse fuse(upright, across);
-    ASSERT_TRUE(fuse.IsDone());
-    const auto [even, halved] = trianglesWithAndWithout(fuse.Shape());
+    EXPECT_TRUE(fuse.IsDone());
+    return fuse.Shape();
+}
+
+// The crossed cylinders: the larger one has two holes where the other meets it, so its region is
+// not its frame's box, but it covers 0.88 of it (kEvenColumnsRegionShare): it takes even columns
+// too, and its circles carry fewer points: 1,808 triangles against 1,988 with halvings (1,772 since
+// the smaller one takes columns too: CylinderCutByAnotherTakesColumnsAroundItsAxis).
+TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
+    const auto [even, halved] = trianglesWithAndWithout(crossedCylinders());
     EXPECT_LT(double(even), 0.95 * double(halved)) << even << " vs " << halved;
 }
 
@@ -218,13 +222,8 @@ TEST(EvenColumns, CylinderWithHolesTakesFewerColumns) {
 // (FaceKdTreeLines::hull) and are no longer halvings: 560 triangles against 632 (its end discs,
 // which take the circles' points, 28 each against 46; BRepMesh_IncrementalMesh 416, discs 29).
 TEST(EvenColumns, CylinderCutByAnotherTakesColumnsAroundItsAxis) {
-    const TopoDS_Shape upright =
-        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -15), gp_Dir(0, 0, 1)), 5, 30).Shape();
-    const TopoDS_Shape across =
-        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-15, 0, 0), gp_Dir(1, 0, 0)), 4, 30).Shape();
-    BRepAlgoAPI_Fuse fuse(upright, across);
-    ASSERT_TRUE(fuse.IsDone());
-    const Model model = occ::importModel(fuse.Shape());
+    const TopoDS_Shape shape = crossedCylinders();
+    const Model model = occ::importModel(shape);
     int hullFramed = 0;
     for (const TrimmedSurface& face : model.faces) {
         const FaceKdTreeLines lines = kdTreeLinesBeforeDiscretisation(face);
@@ -244,7 +243,7 @@ TEST(EvenColumns, CylinderCutByAnotherTakesColumnsAroundItsAxis) {
     options.tolerance = 0.04359;
     const auto result = tessellateModel(model, options);
     EXPECT_TRUE(result.failures.empty());
-    const auto report = occ::verifyMesh(fuse.Shape(), result.mesh, options.tolerance);
+    const auto report = occ::verifyMesh(shape, result.mesh, options.tolerance);
     EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
     EXPECT_EQ(report.openEdges, 0u);
     EXPECT_LT(result.mesh.triangles.size(), 600u);
