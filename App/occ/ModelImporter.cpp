@@ -54,9 +54,11 @@ namespace nurbslod::occ {
 namespace {
 
 // Sewing tolerance as a fraction of the bounding-box diagonal: copies of one edge in a file
-// written without topology coincide to rounding, far closer than this, while distinct edges of
-// a real part are farther apart.
-constexpr double kSewingTolerance = 1e-6;
+// written without topology mostly coincide to rounding, some lie a little apart (hammer.iges:
+// 103 of its 104 pairs within 2e-12 of the diagonal, one 4.5e-6 apart, about its edges' own
+// tolerance in the file; at 1e-6 that pair stayed open, 19 open edges in the mesh at relative
+// 1e-3), while distinct edges of a real part are farther apart.
+constexpr double kSewingTolerance = 1e-5;
 // The same fraction bounds how far a pcurve may stray from its edge before it is remade: a
 // hundredth of the finest tolerance (relative 1e-4) that the benchmarks ask for.
 constexpr double kPcurveAccuracy = 1e-6;
