@@ -14,4 +14,10 @@ namespace nurbslod {
 // forFace gives what a face does not need for its surface to its trimming curves.
 double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap);
 
+// About how many kd-tree cells the face's surface takes at surface share `share`: the bound
+// falls with the square of a cell's sides (paper section 5.2), so a patch whose bound is e
+// takes about e / share cells, at least one. Over the same patches as faceSurfaceNeed; 0 where
+// they are not known. Only for comparing faces and shares, not a count.
+double surfaceCellEstimate(const TrimmedSurface& face, ErrorMode mode, double share);
+
 }  // namespace nurbslod

@@ -8,6 +8,7 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <TopoDS.hxx>
+#include <algorithm>
 #include <cmath>
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
@@ -58,6 +59,38 @@ TEST(FaceErrorBudget, PlaneTakesTheSurfaceShareForItsCurves) {
     // no need known (NaN): the fixed split
     EXPECT_DOUBLE_EQ(ErrorBudget::forFace(t, ErrorMode::Guaranteed, std::nan("")).trimming(),
                      fixed.trimming());
+}
+
+// Faces of an edge that is not exact (its tolerance above a thousandth of the tolerance), each
+// with every curve straight in (u, v): only one of them can have its chords on its surface,
+// and it is the one whose surface saves cells by it, whichever face comes first. A half
+// cylinder: its flat cut (first here) and its curved face share two lines.
+TEST(FaceErrorBudget, SloppyEdgeGoesToTheFaceWhoseSurfaceGainsMore) {
+    const double t = 0.02;
+    Model model = occ::importModel(BRepPrimAPI_MakeCylinder(10, 30, std::numbers::pi).Shape());
+    // the curved face last, so that every other face comes before it
+    const auto curved = std::find_if(model.faces.begin(), model.faces.end(), [](const auto& f) {
+        return f.surface.degreeU() > 1 || f.surface.degreeV() > 1;
+    });
+    ASSERT_NE(curved, model.faces.end());
+    std::rotate(curved, curved + 1, model.faces.end());
+    for (size_t k = 0; k < model.faces.size(); ++k) model.faces[k].faceIndex = int(k) + 1;
+    const int curvedIndex = int(model.faces.size());
+    auto curvedTriangles = [&](double edgeTolerance) {
+        Model sloppy = model;
+        for (auto& edge : sloppy.edges) edge.tolerance = edgeTolerance;
+        TessellationOptions options;
+        options.tolerance = t;
+        const auto result = tessellateModel(sloppy, options);
+        EXPECT_TRUE(result.failures.empty());
+        return std::count(result.mesh.triangleFaces.begin(), result.mesh.triangleFaces.end(),
+                          curvedIndex);
+    };
+    const auto exact = curvedTriangles(0);
+    ASSERT_GT(exact, 0);
+    // exact edges: every face may have its chords on its surface; sloppy ones (0.01 t): the
+    // curved face still does, the planes (which need no surface share) give the lines up
+    EXPECT_EQ(curvedTriangles(0.01 * t), exact);
 }
 
 // A face with a free edge moves surface share to its chords and to dropping the points cell
