@@ -46,6 +46,7 @@
 #include "occ/ClampedBSpline.hpp"
 #include "occ/ClosedSurfaceUnwrapper.hpp"
 #include "occ/FaceSewing.hpp"
+#include "occ/NearIsoparametricCurve.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
 #include "occ/ShapeDiagonal.hpp"
 
@@ -437,6 +438,10 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
                     "a trimming curve could not be carried onto the surface's NURBS form");
         }
     result.surface = toBSplineSurface(unwrapped);
+    for (size_t l = 0; l < result.loops.size(); ++l)
+        for (size_t c = 0; c < result.loops[l].curves.size(); ++c)
+            straightenNearIsoparametric(result.surface, result.loops[l].curves[c],
+                                        BRep_Tool::Tolerance(curveEdges[l][c]));
     return result;
 }
 

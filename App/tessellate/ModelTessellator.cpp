@@ -190,6 +190,20 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return best;
     };
 
+    // The points a shared point is held near, at the edge's normalized parameter s: each face's
+    // own point, or the file's where the importer straightened the curve
+    // (TrimCurve::beforeStraightening), so that the boundary stays within the edge's tolerance of
+    // where the B-rep puts it.
+    auto anchorsOf = [&](std::size_t e, double s, std::vector<Point3> own) {
+        for (std::size_t u = 0; u < uses[e].size(); ++u) {
+            const TrimCurve& c = curveOf(uses[e][u]);
+            if (!c.beforeStraightening) continue;
+            const Point2 uv = c.beforeStraightening->point(c.first + s * (c.last - c.first));
+            own[u] = model.faces[uses[e][u].face].surface.point(uv.x(), uv.y());
+        }
+        return own;
+    };
+
     // Where the surfaces meet (SurfaceMeeting: Newton steps onto their tangent planes) if that
     // is within halfGap of every surface and within the edge's tolerance of each face's own
     // point; else the averaged projections of commonPointOf, held within the edge's tolerance
@@ -279,8 +293,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 }
                 // a point with no common point within reach stays one per face whatever the
                 // gap; one where the surfaces meet within the fixed gap needs no more
-                if (const double offset =
-                        nearestCommonPoint(e, own, start, 0.5 * budget.shareGap, largestGap).offset;
+                if (const double offset = nearestCommonPoint(e, anchorsOf(e, s, own), start,
+                                                             0.5 * budget.shareGap, largestGap)
+                                              .offset;
                     std::isfinite(offset))
                     farthestOffset = std::max(farthestOffset, offset);
             }
@@ -1093,7 +1108,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             own[u] = model.faces[uses[e][u].face].surface.point(start[u].x(), start[u].y());
         }
         const double halfGap = 0.5 * edgeShareGap[e];
-        CommonPoint common = nearestCommonPoint(e, own, start, halfGap, edgeShareGap[e]);
+        CommonPoint common = nearestCommonPoint(e, anchorsOf(e, poly.params[k], own), start,
+                                                halfGap, edgeShareGap[e]);
         if (!(common.offset <= halfGap)) return std::nullopt;
         return common;
     };

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "geometry/BSplineCurve2d.hpp"
@@ -16,6 +17,10 @@ struct TrimCurve {
     bool reversed = false;     // the loop runs from `last` to `first`
     bool seam = false;         // the edge bounds the face on both sides (a closed surface)
     bool degenerated = false;  // the edge is a single 3D point (a pole of a sphere or cone)
+    // The file's curve where the importer straightened it within its edge's tolerance
+    // (straightenNearIsoparametric): a point the edge's faces share is held near it, as near as
+    // the B-rep places the edge.
+    std::optional<BSplineCurve2d> beforeStraightening;
 };
 
 // A closed chain of trimming curves in the order the face's wire runs. Orientation in the
