@@ -17,6 +17,8 @@ struct SewnShape {
     TopoDS_Shape shape;              // the sewn shape (the input when nothing was sewn)
     std::vector<TopoDS_Face> faces;  // in the input's face order (TopExp::MapShapes)
 };
+// The shape as it is, with its faces.
+SewnShape unsewn(const TopoDS_Shape& shape);
 // The input as it is when it has no free edges or sewing fails.
 SewnShape sewFaces(const TopoDS_Shape& shape, double tolerance);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -21,5 +22,11 @@ Model importModel(const TopoDS_Shape& shape);
 // pair lets tests compare our evaluation with OpenCASCADE's on the very same surface.
 Handle(Geom_BSplineSurface) faceSurfaceAsBSpline(const TopoDS_Face& face);
 BSplineSurface toBSplineSurface(const Handle(Geom_BSplineSurface) & surface);
+// A pcurve in our own type.
+BSplineCurve2d toCurve(const Handle(Geom2d_BSplineCurve) & curve);
+
+// Where `original` runs along an isoparametric line (every control point on it), `remade` is put
+// back onto that line: a pcurve fitted to projections only comes within rounding of it.
+void keepIsoparametric(const BSplineCurve2d& original, Geom2d_BSplineCurve& remade);
 
 }  // namespace nurbslod::occ

@@ -1,0 +1,265 @@
+#include "occ/FreeEdgePairs.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "geometry/NearestParameter.hpp"
+#include "occ/ModelImporter.hpp"
+#include "occ/NearIsoparametricCurve.hpp"
+#include "occ/PcurveFromEdgeCurve.hpp"
+
+namespace nurbslod::occ {
+
+namespace {
+
+// Samples along a free edge: its ends, the points between them that a partner must pass
+// near, and a finer polygon for finding the nearest point of the curve.
+struct EdgeSamples {
+    TopoDS_Edge edge;
+    int face = 0;
+    gp_Pnt start, end;
+    std::array<gp_Pnt, 3> inner;  // at a quarter, half and three quarters of the parameter
+    std::vector<double> parameters;
+    std::vector<gp_Pnt> polygon;
+};
+
+constexpr int kPolygonPoints = 32;
+
+EdgeSamples samplesOf(const TopoDS_Edge& edge, int face) {
+    EdgeSamples samples{edge, face, {}, {}, {}, {}, {}};
+    const BRepAdaptor_Curve curve(edge);
+    const double first = curve.FirstParameter(), last = curve.LastParameter();
+    samples.start = curve.Value(first);
+    samples.end = curve.Value(last);
+    for (int k = 0; k < 3; ++k)
+        samples.inner[k] = curve.Value(first + (last - first) * (k + 1) / 4);
+    for (int k = 0; k <= kPolygonPoints; ++k) {
+        const double t = first + (last - first) * k / kPolygonPoints;
+        samples.parameters.push_back(t);
+        samples.polygon.push_back(curve.Value(t));
+    }
+    return samples;
+}
+
+// The distance from `point` to the edge's curve (nearestParameter from its polygon). The curve
+// is known to run within a tolerance of the point's own edge; this only has to tell that from a
+// curve that does not.
+double distanceToCurve(const EdgeSamples& samples, const BRepAdaptor_Curve& curve,
+                       const gp_Pnt& point) {
+    std::vector<double> sampled;
+    for (const gp_Pnt& p : samples.polygon) sampled.push_back(p.SquareDistance(point));
+    auto distance2 = [&](double t) { return curve.Value(t).SquareDistance(point); };
+    return std::sqrt(distance2(nearestParameter(samples.parameters, sampled, distance2)));
+}
+
+bool sameEdge(const EdgeSamples& a, const EdgeSamples& b, double tolerance) {
+    if (a.face == b.face) return false;
+    const bool along = a.start.Distance(b.start) <= tolerance && a.end.Distance(b.end) <= tolerance;
+    const bool against =
+        a.start.Distance(b.end) <= tolerance && a.end.Distance(b.start) <= tolerance;
+    if (!along && !against) return false;
+    const BRepAdaptor_Curve curveA(a.edge), curveB(b.edge);
+    for (const gp_Pnt& p : a.inner)
+        if (!(distanceToCurve(b, curveB, p) <= tolerance)) return false;
+    for (const gp_Pnt& p : b.inner)
+        if (!(distanceToCurve(a, curveA, p) <= tolerance)) return false;
+    return true;
+}
+
+}  // namespace
+
+std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& shape) {
+    TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
+    std::vector<TopoDS_Edge> result;
+    for (int i = 1; i <= facesOfEdge.Extent(); ++i) {
+        const TopoDS_Edge& edge = TopoDS::Edge(facesOfEdge.FindKey(i));
+        if (BRep_Tool::Degenerated(edge)) continue;
+        const auto& faces = facesOfEdge(i);
+        if (faces.Extent() == 1 && !BRep_Tool::IsClosed(edge, TopoDS::Face(faces.First())))
+            result.push_back(edge);
+    }
+    return result;
+}
+
+std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolerance) {
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) return {};
+    TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(shape, TopAbs_FACE, faces);
+    std::vector<EdgeSamples> edges;
+    try {
+        for (const TopoDS_Edge& edge : freeEdges(shape))
+            edges.push_back(
+                samplesOf(edge, faces.FindIndex(facesOfEdge.FindFromKey(edge).First())));
+    } catch (const Standard_Failure&) {
+        return {};  // an edge without a curve: the sewing decides
+    }
+    if (edges.empty() || edges.size() % 2 != 0) return {};
+    // Partners have ends within the tolerance, so their lower x of the two ends too: sorted by
+    // it, each edge's candidates are a run of neighbours.
+    auto lowX = [](const EdgeSamples& e) { return std::min(e.start.X(), e.end.X()); };
+    std::vector<size_t> order(edges.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(),
+              [&](size_t i, size_t j) { return lowX(edges[i]) < lowX(edges[j]); });
+    std::vector<bool> paired(edges.size(), false);
+    std::vector<FreeEdgePair> pairs;
+    try {
+        for (size_t i = 0; i < order.size(); ++i) {
+            const EdgeSamples& a = edges[order[i]];
+            if (paired[order[i]]) continue;
+            bool found = false;
+            for (size_t j = i + 1; j < order.size() && lowX(edges[order[j]]) <= lowX(a) + tolerance;
+                 ++j) {
+                if (paired[order[j]] || !sameEdge(a, edges[order[j]], tolerance)) continue;
+                paired[order[i]] = paired[order[j]] = true;
+                pairs.push_back({a.edge, edges[order[j]].edge});
+                found = true;
+                break;
+            }
+            if (!found) return {};
+        }
+    } catch (const Standard_Failure&) {
+        return {};
+    }
+    return pairs;
+}
+
+// The joined face's curve follows the points the kept face's mesh has on the edge; each
+// projection starts from the joined face's own pcurve at the nearest parameter.
+void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pairs,
+                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double accuracy) {
+    if (pairs.empty()) return;
+    struct CurveUse {
+        int face = -1, loop = -1, curve = -1;
+    };
+    const int edgeCount = static_cast<int>(model.edges.size());
+    std::vector<CurveUse> useOf(model.edges.size());
+    std::vector<int> useCount(model.edges.size(), 0);
+    for (int f = 0; f < static_cast<int>(model.faces.size()); ++f) {
+        if (!model.faces[f].error.empty()) continue;
+        const auto& loops = model.faces[f].loops;
+        for (int l = 0; l < static_cast<int>(loops.size()); ++l)
+            for (int c = 0; c < static_cast<int>(loops[l].curves.size()); ++c) {
+                const int e = loops[l].curves[c].edge;
+                if (e < 0 || e >= edgeCount) continue;
+                useOf[e] = {f, l, c};
+                ++useCount[e];
+            }
+    }
+    std::vector<int> root(model.vertices.size());
+    std::iota(root.begin(), root.end(), 0);
+    auto find = [&](int v) {
+        while (root[v] != v) v = root[v] = root[root[v]];
+        return v;
+    };
+    auto unite = [&](int a, int b) {
+        if (a < 0 || b < 0) return;
+        a = find(a), b = find(b);
+        if (a != b) root[b] = a;
+    };
+    auto toPnt = [](const Point3& p) { return gp_Pnt(p.x(), p.y(), p.z()); };
+    for (const auto& [kept, joined] : pairs) {
+        if (kept < 0 || joined < 0 || kept >= edgeCount || joined >= edgeCount ||
+            useCount[kept] != 1 || useCount[joined] != 1)
+            continue;
+        const CurveUse a = useOf[kept], b = useOf[joined];
+        if (a.face == b.face || surfaces[b.face].IsNull()) continue;
+        const TrimmedSurface& faceA = model.faces[a.face];
+        TrimmedSurface& faceB = model.faces[b.face];
+        const TrimCurve& curveA = faceA.loops[a.loop].curves[a.curve];
+        TrimCurve& curveB = faceB.loops[b.loop].curves[b.curve];
+        if (curveA.degenerated || curveB.degenerated || curveA.seam || curveB.seam) continue;
+        const std::function<Point3(double)> onA = [&](double t) {
+            const Point2 uv = curveA.pcurve.point(t);
+            return faceA.surface.point(uv.x(), uv.y());
+        };
+        const BSplineCurve2d ownB = curveB.pcurve;
+        const std::function<Point3(double)> onB = [&](double s) {
+            const Point2 uv = ownB.point(s);
+            return faceB.surface.point(uv.x(), uv.y());
+        };
+        // b's parameter nearest to a's points, at evenly spaced parameters of a
+        constexpr int kSamples = 32;
+        std::vector<double> parametersB, nearestB;
+        std::vector<Point3> polygonB;
+        for (int k = 0; k <= 2 * kSamples; ++k) {
+            parametersB.push_back(curveB.first + (curveB.last - curveB.first) * k / (2 * kSamples));
+            polygonB.push_back(onB(parametersB.back()));
+        }
+        double gap = 0;
+        for (int k = 0; k <= kSamples; ++k) {
+            const Point3 p = onA(curveA.first + (curveA.last - curveA.first) * k / kSamples);
+            std::vector<double> sampled;
+            for (const Point3& q : polygonB) sampled.push_back((q - p).squaredNorm());
+            nearestB.push_back(nearestParameter(
+                parametersB, sampled, [&](double s) { return (onB(s) - p).squaredNorm(); }));
+            gap = std::max(gap, (onB(nearestB.back()) - p).norm());
+        }
+        const auto guess = [&](double t) {
+            const double x =
+                std::clamp((t - curveA.first) / (curveA.last - curveA.first), 0.0, 1.0) * kSamples;
+            const int k = std::min(static_cast<int>(x), kSamples - 1);
+            const double s = nearestB[k] + (x - k) * (nearestB[k + 1] - nearestB[k]);
+            const Point2 uv = ownB.point(s);
+            return gp_Pnt2d(uv.x(), uv.y());
+        };
+        Handle(Geom2d_BSplineCurve) remade;
+        try {
+            remade = pcurveFromCurve([&](double t) { return toPnt(onA(t)); }, surfaces[b.face],
+                                     guess, curveA.first, curveA.last, accuracy);
+        } catch (const Standard_Failure&) {
+            continue;
+        }
+        if (remade.IsNull()) continue;
+        keepIsoparametric(ownB, *remade);
+        // the copies run the same way where b's parameter grows with a's (read between the
+        // ends: a closed edge's ends are one point, either end of b)
+        const bool along = nearestB[3 * kSamples / 4] > nearestB[kSamples / 4];
+        curveB.pcurve = toCurve(remade);
+        curveB.beforeStraightening.reset();  // a curve of the face's old edge parameter
+        curveB.first = curveA.first;
+        curveB.last = curveA.last;
+        curveB.edge = kept;
+        if (!along) curveB.reversed = !curveB.reversed;
+        ModelEdge& edge = model.edges[kept];
+        const ModelEdge& copy = model.edges[joined];
+        edge.tolerance = std::max({edge.tolerance, copy.tolerance, gap});
+        // the remade curve follows the kept one's points: along an isoparametric line of its
+        // own surface to within rounding, or as near as the copies are
+        straightenNearIsoparametric(faceB.surface, curveB, edge.tolerance);
+        // the copy's ends onto the kept edge's nearer ones
+        unite(edge.firstVertex, along ? copy.firstVertex : copy.lastVertex);
+        unite(edge.lastVertex, along ? copy.lastVertex : copy.firstVertex);
+    }
+    // one vertex for each set of copies, its tolerance reaching every copy's
+    std::vector<double> tolerance(model.vertices.size());
+    for (size_t v = 0; v < model.vertices.size(); ++v) tolerance[v] = model.vertices[v].tolerance;
+    for (size_t v = 0; v < model.vertices.size(); ++v) {
+        const int r = find(static_cast<int>(v));
+        tolerance[r] =
+            std::max(tolerance[r], model.vertices[v].tolerance +
+                                       (model.vertices[v].point - model.vertices[r].point).norm());
+    }
+    for (size_t v = 0; v < model.vertices.size(); ++v)
+        model.vertices[v].tolerance = tolerance[find(int(v))];
+    for (ModelEdge& edge : model.edges) {
+        if (edge.firstVertex >= 0) edge.firstVertex = find(edge.firstVertex);
+        if (edge.lastVertex >= 0) edge.lastVertex = find(edge.lastVertex);
+    }
+}
+
+}  // namespace nurbslod::occ
