@@ -390,17 +390,19 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 return straightUse[e][k] != 0;
         return curveOnSurface({f, l, c}).straightInParameterPlane();
     };
+    // whether `holds` holds for every curve of face f (a face with curves, not failed)
+    auto everyCurve = [&](int f, const auto& holds) {
+        if (!failure[f].empty() || model.faces[f].loops.empty()) return false;
+        const auto& loops = model.faces[f].loops;
+        for (int l = 0; l < int(loops.size()); ++l)
+            for (int c = 0; c < int(loops[l].curves.size()); ++c)
+                if (!holds(l, c)) return false;
+        return true;
+    };
     std::vector<char> candidate(faceCount, 0);
     if (options.mode == ErrorMode::Guaranteed)
-        for (int f = 0; f < faceCount; ++f) {
-            if (!failure[f].empty()) continue;
-            const auto& face = model.faces[f];
-            bool all = !face.loops.empty();
-            for (int l = 0; all && l < int(face.loops.size()); ++l)
-                for (int c = 0; all && c < int(face.loops[l].curves.size()); ++c)
-                    all = curveStraight(f, l, c);
-            candidate[f] = all;
-        }
+        for (int f = 0; f < faceCount; ++f)
+            candidate[f] = everyCurve(f, [&](int l, int c) { return curveStraight(f, l, c); });
     const double wholeSurface =
         ErrorBudget::forChordsOnSurface(options.tolerance, options.mode).surface;
     std::vector<double> savedCells(faceCount, std::numeric_limits<double>::quiet_NaN());
@@ -412,6 +414,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         return savedCells[f];
     };
     std::vector<int> curveUse(model.edges.size(), -1);
+    // the chord of face f's curve (l, c) lies on its surface: see chordsOnSurface below
+    auto chordOnSurface = [&](int f, int l, int c) {
+        const int e = model.faces[f].loops[l].curves[c].edge;
+        const bool exact = exactEdge(e);
+        return curveStraight(f, l, c) &&
+               ((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
+                (model.edges[e].degenerated && exact));
+    };
     for (bool changed = true; changed;) {
         for (size_t e = 0; e < model.edges.size(); ++e) {
             int best = -1;
@@ -426,18 +436,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             curveUse[e] = best;
         }
         changed = false;
-        for (int f = 0; f < faceCount; ++f) {
-            if (!candidate[f]) continue;
-            const auto& face = model.faces[f];
-            for (int l = 0; candidate[f] && l < int(face.loops.size()); ++l)
-                for (int c = 0; candidate[f] && c < int(face.loops[l].curves.size()); ++c) {
-                    const int e = face.loops[l].curves[c].edge;
-                    const bool exact = exactEdge(e);
-                    if (!((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
-                          (model.edges[e].degenerated && exact)))
-                        candidate[f] = 0, changed = true;
-                }
-        }
+        for (int f = 0; f < faceCount; ++f)
+            if (candidate[f] &&
+                !everyCurve(f, [&](int l, int c) { return chordOnSurface(f, l, c); }))
+                candidate[f] = 0, changed = true;
     }
 
     // A face has no trimming error at all (ErrorBudget::forChordsOnSurface) where every curve
@@ -451,18 +453,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::vector<char> chordsOnSurface(faceCount, 0);
     if (options.mode == ErrorMode::Guaranteed)
         for (int f = 0; f < faceCount; ++f) {
-            if (!failure[f].empty()) continue;
-            const auto& face = model.faces[f];
-            bool all = !face.loops.empty();
-            for (int l = 0; all && l < int(face.loops.size()); ++l)
-                for (int c = 0; all && c < int(face.loops[l].curves.size()); ++c) {
-                    const int e = face.loops[l].curves[c].edge;
-                    const bool exact = model.edges[e].tolerance <= kExactEdge * options.tolerance;
-                    all = curveOnSurface({f, l, c}).straightInParameterPlane() &&
-                          ((curveUse[e] >= 0 && (uses[e][curveUse[e]].face == f || exact)) ||
-                           (model.edges[e].degenerated && exact));
-                }
-            if (!all) continue;
+            if (!everyCurve(f, [&](int l, int c) { return chordOnSurface(f, l, c); })) continue;
             chordsOnSurface[f] = 1;
             faceBudgets[f] = ErrorBudget::forChordsOnSurface(options.tolerance, options.mode);
         }
