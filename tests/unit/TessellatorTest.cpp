@@ -265,8 +265,9 @@ TEST(Tessellation, LooseFacesAreSewnIntoAClosedMesh) {
 }
 
 // hammer.iges is loose faces whose copies of one edge coincide to rounding but for one pair,
-// 4.5e-6 of the diagonal apart (about its edges' own tolerance): sewn at 1e-6 of the diagonal,
-// that pair stayed two edges and the mesh open along them (19 open edges at relative 1e-3).
+// 4.5e-6 of the diagonal apart (about its edges' own tolerance): matched at 1e-6 of the
+// diagonal, that pair stayed two edges and the mesh open along them (19 open edges at relative
+// 1e-3).
 TEST(Tessellation, LooseFacesALittleApartAreSewnToo) {
     const auto path = kCorpus / "hammer.iges";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
