@@ -79,31 +79,40 @@ bool sameEdge(const EdgeSamples& a, const EdgeSamples& b, double tolerance) {
 
 }  // namespace
 
-std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& shape) {
+namespace {
+
+// The free edges of the shape, each with the one face it bounds.
+std::vector<std::pair<TopoDS_Edge, TopoDS_Face>> freeEdgesWithFaces(const TopoDS_Shape& shape) {
     TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
     TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
-    std::vector<TopoDS_Edge> result;
+    std::vector<std::pair<TopoDS_Edge, TopoDS_Face>> result;
     for (int i = 1; i <= facesOfEdge.Extent(); ++i) {
         const TopoDS_Edge& edge = TopoDS::Edge(facesOfEdge.FindKey(i));
         if (BRep_Tool::Degenerated(edge)) continue;
         const auto& faces = facesOfEdge(i);
-        if (faces.Extent() == 1 && !BRep_Tool::IsClosed(edge, TopoDS::Face(faces.First())))
-            result.push_back(edge);
+        if (faces.Extent() != 1) continue;
+        const TopoDS_Face& face = TopoDS::Face(faces.First());
+        if (!BRep_Tool::IsClosed(edge, face)) result.emplace_back(edge, face);
     }
+    return result;
+}
+
+}  // namespace
+
+std::vector<TopoDS_Edge> freeEdges(const TopoDS_Shape& shape) {
+    std::vector<TopoDS_Edge> result;
+    for (const auto& [edge, face] : freeEdgesWithFaces(shape)) result.push_back(edge);
     return result;
 }
 
 std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolerance) {
     if (!(tolerance > 0) || !std::isfinite(tolerance)) return {};
-    TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
-    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     std::vector<EdgeSamples> edges;
     try {
-        for (const TopoDS_Edge& edge : freeEdges(shape))
-            edges.push_back(
-                samplesOf(edge, faces.FindIndex(facesOfEdge.FindFromKey(edge).First())));
+        for (const auto& [edge, face] : freeEdgesWithFaces(shape))
+            edges.push_back(samplesOf(edge, faces.FindIndex(face)));
     } catch (const Standard_Failure&) {
         return {};  // an edge without a curve: the sewing decides
     }

@@ -461,7 +461,7 @@ Model importModel(const TopoDS_Shape& original) {
     // Loose faces (no shared edges in the file) are sewn where their edges coincide to far
     // below any tolerance a user asks for, so that the mesh closes across them.
     // Faces written edge for edge pair up whole (pairFreeEdges): each pair is joined after the
-    // import (joinEdgePairs), which costs a projection per pair. OpenCASCADE's sewing merges
+    // import (joinFreeEdgePairs), which costs a projection per pair. OpenCASCADE's sewing merges
     // the same edges with BRepLib::SameParameter, which took 52% of hammer.iges's whole run
     // (1.0 of 1.9 G instructions); it is left for what pairs do not cover.
     const double sewingTolerance = kSewingTolerance * model.boundingBoxDiagonal;

@@ -25,25 +25,20 @@ double straightenNearIsoparametric(const BSplineSurface& surface, TrimCurve& cur
         for (const auto& pole : poles)
             spread = std::max(spread, std::abs(pole[axis] / pole.z() - value));
         if (spread == 0) return 0;  // on the line already
-        // The ends stay where they are, within a hundredth of the tolerance: they sit on the
-        // B-rep's vertices, where the neighbouring curves end too (moved ends opened
-        // trj7_b1-ec-214.stp at relative 1e-4 along 6 more edges).
-        auto endMove = [&](const Point2& uv) {
+        // how far the surface point at uv moves when uv goes onto the line
+        auto moveOf = [&](const Point2& uv) {
             Point2 onLine = uv;
             onLine[axis] = value;
             return (surface.point(uv.x(), uv.y()) - surface.point(onLine.x(), onLine.y())).norm();
         };
-        if (!(std::max(endMove(start), endMove(end)) <= kEndMove * within)) continue;
+        // The ends stay where they are, within a hundredth of the tolerance: they sit on the
+        // B-rep's vertices, where the neighbouring curves end too (moved ends opened
+        // trj7_b1-ec-214.stp at relative 1e-4 along 6 more edges).
+        if (!(std::max(moveOf(start), moveOf(end)) <= kEndMove * within)) continue;
         double moved = 0;
-        for (int k = 0; k <= kSamples; ++k) {
-            const double t = curve.first + (curve.last - curve.first) * k / kSamples;
-            const Point2 uv = curve.pcurve.point(t);
-            Point2 onLine = uv;
-            onLine[axis] = value;
-            moved = std::max(
-                moved,
-                (surface.point(uv.x(), uv.y()) - surface.point(onLine.x(), onLine.y())).norm());
-        }
+        for (int k = 0; k <= kSamples; ++k)
+            moved = std::max(moved, moveOf(curve.pcurve.point(
+                                        curve.first + (curve.last - curve.first) * k / kSamples)));
         moved *= kBetweenSamples;
         if (!(moved <= within)) continue;
         std::vector<HomogeneousPoint2> straight = poles;

@@ -18,6 +18,7 @@
 #include <random>
 #include <set>
 
+#include "CorpusMesh.hpp"
 #include "OcctSurface.hpp"
 #include "geometry/BezierPatchGrid.hpp"
 #include "geometry/SurfaceNormal.hpp"
@@ -269,15 +270,11 @@ TEST(Tessellation, LooseFacesAreSewnIntoAClosedMesh) {
 // diagonal, that pair stayed two edges and the mesh open along them (19 open edges at relative
 // 1e-3).
 TEST(Tessellation, LooseFacesALittleApartAreSewnToo) {
-    const auto path = kCorpus / "hammer.iges";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << kCorpus;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    TessellationOptions options;
-    options.tolerance = 1e-3 * model.boundingBoxDiagonal;
-    const auto result = tessellateModel(model, options);
-    ASSERT_TRUE(result.failures.empty());
-    const auto report = occ::verifyMesh(shape, result.mesh, options.tolerance);
+    const auto result = test::tessellatedCorpusModel("hammer.iges", 1e-3);
+    if (!result) GTEST_SKIP() << "corpus not found at " << kCorpus;
+    ASSERT_TRUE(result->failures.empty());
+    const auto report = occ::verifyMesh(occ::readShape((kCorpus / "hammer.iges").string()),
+                                        result->mesh, result->tolerance);
     EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
     EXPECT_EQ(report.openEdges, 0u);
 }
