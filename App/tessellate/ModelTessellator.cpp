@@ -257,6 +257,23 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             (start - first).norm() + (end - last).norm())
             std::swap(endVertices[e].first, endVertices[e].second);
     }
+    // Where a curve's end at B-rep vertex `vertex` (-1: none) goes, from (u, v) `uv` on the
+    // face's surface: a sloppy file may stop a trimming curve short of its B-rep vertex (by up
+    // to the vertex's tolerance) while the exact face reaches the vertex, so an end more than
+    // 1e-3 T but at most twice the vertex's tolerance from it moves to the vertex's foot on the
+    // surface (where that is nearer), and the faces that meet there end at nearly the same
+    // point. `uv` is updated; returns the point.
+    auto endAtVertex = [&](const BSplineSurface& surface, int vertex, Point2& uv) {
+        const Point3 point = surface.point(uv.x(), uv.y());
+        if (vertex < 0) return point;
+        const ModelVertex& brepVertex = model.vertices[vertex];
+        const double gap = (point - brepVertex.point).norm();
+        if (!(gap > 1e-3 * options.tolerance) || gap > 2 * brepVertex.tolerance) return point;
+        const SurfaceFoot foot = projectOntoSurface(surface, brepVertex.point, uv);
+        if (!((foot.point - brepVertex.point).norm() < gap)) return point;
+        uv = foot.uv;
+        return foot.point;
+    };
     // Per-edge share gap (ErrorBudget::withShareGap). Along each shared edge, the faces' gap is
     // measured as the vertices are placed below (commonPointOf) at evenly spaced parameters;
     // where it is over the fixed share gap and every face of the edge can give the difference
@@ -318,11 +335,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 faceBudgets[f].withShareGap(faceGap[f], options.tolerance, options.mode);
 
         // The gap each face's shared points need: its shared edges' samples, and the curves'
-        // ends at its B-rep vertices (exact there, but with the margin too: those ends move
-        // onto the vertex's foot on each surface below). At least 0.005 T: the edges' own
-        // points are checked against it once they are placed (step 1a), and a floor of 0.02 T
-        // kept bug3883_xr2-ct-214_bolt.stp's cylinders at relative 1e-3 one halving finer
-        // (308 triangles; 252 with this one).
+        // ends at its B-rep vertices where step 2 puts them (endAtVertex; with the margin too).
+        // Measured at the curves' own ends, trj7_b1-ec-214.stp at relative 1e-4 narrowed faces
+        // 229 and 284 to 0.0085 T where their feet at a vertex came out 0.028 T apart: one point
+        // each, an open crack. At least 0.005 T: the edges' own points are checked against it
+        // once they are placed (step 1a), and a floor of 0.02 T kept
+        // bug3883_xr2-ct-214_bolt.stp's cylinders at relative 1e-3 one halving finer (308
+        // triangles; 252 with this one).
         constexpr double kNarrowestGap = 0.005;
         std::fill(narrowGap.begin(), narrowGap.end(), kNarrowestGap * options.tolerance);
         std::map<int, std::vector<std::pair<int, Point3>>> ends;  // B-rep vertex: (face, point)
@@ -332,10 +351,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     narrowGap[u.face] = std::max(narrowGap[u.face], sharedNeed[e]);
             for (const auto& u : uses[e]) {
                 const CurveOnSurface curve = curveOnSurface(u);
-                if (endVertices[e].first >= 0)
-                    ends[endVertices[e].first].push_back({u.face, curve.point(0.0)});
-                if (endVertices[e].second >= 0)
-                    ends[endVertices[e].second].push_back({u.face, curve.point(1.0)});
+                const BSplineSurface& surface = model.faces[u.face].surface;
+                for (const auto& [vertex, s] :
+                     {std::pair{endVertices[e].first, 0.0}, std::pair{endVertices[e].second, 1.0}})
+                    if (vertex >= 0) {
+                        Point2 uv = curve.uv(s);
+                        ends[vertex].push_back({u.face, endAtVertex(surface, vertex, uv)});
+                    }
             }
         }
         for (const auto& [vertex, list] : ends) {
@@ -999,11 +1021,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
     }
 
-    // 2. shared vertices: B-rep vertices first, then the inner points of every edge.
-    // A sloppy file may stop a trimming curve short of its B-rep vertex (by up to the vertex's
-    // tolerance), while the exact face reaches the vertex: each curve end then moves to the
-    // vertex's foot on the face's surface, so that the face covers its corner and the faces
-    // that meet there end at nearly the same point.
+    // 2. shared vertices: B-rep vertices first, then the inner points of every edge; each
+    // curve end at its vertex as endAtVertex puts it.
     std::vector<std::vector<std::array<Point3, 2>>> endPoints(model.edges.size());
     forEachIndex(size_t(0), model.edges.size(), [&](size_t e) {
         if (uses[e].empty()) return;
@@ -1015,17 +1034,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             for (int end = 0; end < 2; ++end) {
                 const int vertex = end == 0 ? firstVertex : lastVertex;
                 Point2& uv = end == 0 ? poly.uv[k].front() : poly.uv[k].back();
-                Point3& point = endPoints[e][k][end];
-                point = surface.point(uv.x(), uv.y());
-                if (vertex < 0) continue;
-                const ModelVertex& brepVertex = model.vertices[vertex];
-                const double gap = (point - brepVertex.point).norm();
-                if (!(gap > 1e-3 * options.tolerance) || gap > 2 * brepVertex.tolerance) continue;
-                const SurfaceFoot foot = projectOntoSurface(surface, brepVertex.point, uv);
-                if ((foot.point - brepVertex.point).norm() < gap) {
-                    uv = foot.uv;
-                    point = foot.point;
-                }
+                endPoints[e][k][end] = endAtVertex(surface, vertex, uv);
             }
         }
     });
