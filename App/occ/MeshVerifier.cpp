@@ -526,6 +526,9 @@ struct Sample {
     bool projected = false;      // false when OpenCASCADE could not project it
 };
 
+// The face's area (BRepGProp); defined below.
+double faceArea(const TopoDS_Face& face);
+
 class FaceMeasurer {
 public:
     FaceMeasurer(const TopoDS_Face& face, const Mesh& mesh,
@@ -553,6 +556,14 @@ public:
         }
         ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_);
         if (reference.triangles.empty()) reference = gridReferenceOf(face_, referenceDeflection_);
+        if (reference.triangles.empty() && faceArea(face_) <= tolerance_ * tolerance_) {
+            // A face of no area (two edges along one curve: SOD_323.stp of FreeCAD's IDF
+            // library, face 16) has nothing to cover; its triangles, a tessellator's sliver
+            // along it, are measured against the face itself, which lies along its edges.
+            // meshjudge leaves such a face out (no reference mesh), whatever its triangles.
+            result.dev = deviationFromFace(result.edgeTolerance);
+            return result;
+        }
         if (reference.triangles.empty()) {
             result.measured = false;
             result.problem =
@@ -566,6 +577,28 @@ public:
     }
 
 private:
+    // The largest distance from the corners, side middles and centroids of the face's
+    // triangles to the exact trimmed face, less the edge tolerance (the slack at a boundary).
+    double deviationFromFace(double edgeTolerance) const {
+        TrimmedFaceDistance distance(face_);
+        double worst = 0;
+        for (const std::uint32_t t : triangles_) {
+            const auto& corners = mesh_.triangles[t];
+            std::vector<Point3> samples;
+            for (int k = 0; k < 3; ++k) {
+                samples.push_back(mesh_.positions[corners[k]]);
+                samples.push_back(
+                    0.5 * (mesh_.positions[corners[k]] + mesh_.positions[corners[(k + 1) % 3]]));
+            }
+            samples.push_back((mesh_.positions[corners[0]] + mesh_.positions[corners[1]] +
+                               mesh_.positions[corners[2]]) /
+                              3);
+            for (const Point3& p : samples)
+                worst = std::max(worst, distance.distance(gp_Pnt(p.x(), p.y(), p.z())));
+        }
+        return std::max(0.0, worst - edgeTolerance);
+    }
+
     // The samples of the face's triangles, numbered: the face's vertices once each, then per
     // triangle its edge midpoints, centroid and as many interior points as meshjudge takes for
     // a face of this size. Made on the fly, so that a face of millions of triangles does not
