@@ -1086,17 +1086,31 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 all.push_back(p);
                 gap = std::min(gap, faceBudgets[face].shareGap);
             }
+            std::map<int, std::vector<Point3>> byFace;
+            for (auto& [face, p] : list) byFace[face].push_back(p);
+            // Each face may also move its points to the common one as far as it moves them to
+            // a point of its own: a sloppy wire's curves end apart at their vertex, and the
+            // face's own point, their centroid, is that far from them already.
+            // SMB_DO_214AA.stp of FreeCAD's IDF library: a band 0.005 mm high (0.72 T at
+            // relative 1e-3) whose top shares its edges with the planes under it (tolerance
+            // 0.0044), and a side wall whose two curves end at the top's and the plane's
+            // heights: the side wall's own gap kept each face a corner of its own, and the
+            // band's edges, a chord each, open (16 open edges; BRepMesh 0).
+            const Point3 middle = centroid(all);
+            bool eachFaceAllows = true;
+            for (const auto& [face, points] : byFace)
+                eachFaceAllows = eachFaceAllows && farthest(points, middle) <=
+                                                       std::max(0.5 * faceBudgets[face].shareGap,
+                                                                farthest(points, centroid(points)));
             // within the fixed gap as before; within a wider one, its point is within half of
             // it of every face's own point
             if ((spread(all) <= budget.shareGap && gap >= budget.shareGap) ||
-                farthest(all, centroid(all)) <= 0.5 * gap) {
+                farthest(all, middle) <= 0.5 * gap || eachFaceAllows) {
                 vertexOfBrepVertex[{vertex, -1}] = static_cast<std::uint32_t>(positions.size());
-                positions.push_back(centroid(all));
+                positions.push_back(middle);
                 offsets.push_back(farthest(all, positions.back()));
                 continue;
             }
-            std::map<int, std::vector<Point3>> byFace;
-            for (auto& [face, p] : list) byFace[face].push_back(p);
             for (auto& [face, points] : byFace) {
                 vertexOfBrepVertex[{vertex, face}] = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));

@@ -148,6 +148,23 @@ TEST(OpenEdges, SloppyEdgesWithinTheirFacesShareGapAreClosed) {
     EXPECT_EQ(*open, 0u);
 }
 
+// A B-rep vertex where a sloppy wire's curves end apart: SMB_DO_214AA.stp of FreeCAD's IDF
+// library (a diode package; the freecad package installs it) has a band 0.005 mm high (0.72 T
+// at relative 1e-3) whose top shares its edges with the planes under it (tolerance 0.0044),
+// and side walls whose two curves end at the top's and at the plane's height. The side wall's
+// own share gap (0.2 T) kept each face a corner of its own, and the band's edges, a chord each,
+// stayed open: 16 open edges, where BRepMesh leaves none. Each face now moves its points to the
+// common corner as far as it moves them to a corner of its own.
+TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
+    const std::filesystem::path path = "/usr/share/freecad/Mod/Idf/Idflibs/SMB_DO_214AA.stp";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (freecad)";
+    const TopoDS_Shape shape = occ::readShape(path.string());
+    const auto result = tessellateGuaranteed(shape, 1e-3);
+    EXPECT_TRUE(result.failures.empty());
+    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    EXPECT_TRUE(occ::verifyMesh(shape, result.mesh, result.tolerance).pass);
+}
+
 // The face's own point v on the chord (a, b) of an open boundary, with a fan of triangles
 // to the points inside; in (u, v) the face is the unit square's lower half band.
 FaceMesh fanOnChord(double bend) {
