@@ -271,6 +271,16 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (!(gap > 1e-3 * options.tolerance) || gap > 2 * brepVertex.tolerance) return point;
         const SurfaceFoot foot = projectOntoSurface(surface, brepVertex.point, uv);
         if (!((foot.point - brepVertex.point).norm() < gap)) return point;
+        // A foot a tenth of the domain away in (u, v) is a slide along a pole's row, not the
+        // end moved onto its vertex: the chord from it would cut across the face.
+        // shell1.brep of OpenCASCADE's samples: face 39's pole is its corner, and an edge's end
+        // there slid from u = 1 to 0.5; the points later put on that edge's chord in (u, v)
+        // lay inside the face, 0.33 off the next face (40 T at relative 1e-4).
+        const auto& knotsU = surface.knotsU();
+        const auto& knotsV = surface.knotsV();
+        if (std::abs(foot.uv.x() - uv.x()) > 0.1 * (knotsU.last() - knotsU.first()) ||
+            std::abs(foot.uv.y() - uv.y()) > 0.1 * (knotsV.last() - knotsV.first()))
+            return point;
         uv = foot.uv;
         return foot.point;
     };

@@ -165,6 +165,22 @@ TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
     EXPECT_TRUE(occ::verifyMesh(shape, result.mesh, result.tolerance).pass);
 }
 
+// A curve's end moves onto its B-rep vertex's foot on the surface, but not by sliding along a
+// pole's row: shell1.brep of OpenCASCADE's samples (occt-misc, which libocct-foundation-dev
+// depends on) has a face whose corner is a pole (face 39), where an edge's end slid from u = 1
+// to 0.5; the points later cut into that edge's chord in (u, v) lay inside the face, and the
+// neighbouring face's triangles were 0.33 (40 T) off it at relative 1e-4.
+TEST(OpenEdges, AnEndAtAPoleKeepsItsSide) {
+    const std::filesystem::path path = "/usr/share/opencascade/data/occ/shell1.brep";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (occt-misc)";
+    const TopoDS_Shape shape = occ::readShape(path.string());
+    const auto result = tessellateGuaranteed(shape, 1e-4);
+    EXPECT_TRUE(result.failures.empty());
+    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.facesOverTolerance.empty());
+    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+}
+
 // The face's own point v on the chord (a, b) of an open boundary, with a fan of triangles
 // to the points inside; in (u, v) the face is the unit square's lower half band.
 FaceMesh fanOnChord(double bend) {
