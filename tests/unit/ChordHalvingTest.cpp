@@ -19,16 +19,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <vector>
 
+#include "SampleModels.hpp"
 #include "WeldedOpenEdges.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
-#include "occ/ShapeReader.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
@@ -161,12 +158,9 @@ TEST(ChordHalving, CrossingChordsGetFinerChords) {
 // and the cylinders on those circles twice the columns: 492 triangles at relative 1e-3 (the
 // deviation 0.37 T), where BRepMesh takes 294; 276 now.
 TEST(ChordHalving, ChordsCrossingOnlyAtACornerKeepTheFaceShare) {
-    const std::filesystem::path path = "/usr/share/opencascade/data/occ/EngineBlock.rle";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (occt-misc)";
-    std::ifstream file(path);
-    std::stringstream text;
-    text << file.rdbuf();
-    const TopoDS_Shape shape = occ::shapeFromBrepString(text.str());
+    const auto sample = test::sampleModel(test::kOpenCascadeSamples / "EngineBlock.rle");
+    if (!sample) GTEST_SKIP() << "OpenCASCADE's samples not found";
+    const TopoDS_Shape& shape = *sample;
     const Model model = occ::importModel(shape);
     TessellationOptions options;
     options.tolerance = 1e-3 * model.boundingBoxDiagonal;

@@ -387,7 +387,7 @@ TEST(MeshVerifier, FaceThatBRepMeshLeavesEmptyIsMeasuredOnAGrid) {
     ASSERT_EQ(report.faces.size(), 1u);
     EXPECT_TRUE(report.faces.front().measured) << report.faces.front().problem;
     EXPECT_TRUE(report.facesUnmeasured.empty());
-    EXPECT_LT(report.faces.front().dev, 0.5 * tolerance);  // chords of 120 x 120 cells
+    EXPECT_LT(report.faces.front().dev, 0.5 * tolerance);    // chords of 120 x 120 cells
     EXPECT_LT(report.faces.front().cover, 0.5 * tolerance);  // and the strip they leave
 
     // the same mesh moved off along z by twice the tolerance

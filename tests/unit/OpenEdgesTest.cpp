@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "SampleModels.hpp"
 #include "WeldedOpenEdges.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
@@ -156,13 +157,12 @@ TEST(OpenEdges, SloppyEdgesWithinTheirFacesShareGapAreClosed) {
 // stayed open: 16 open edges, where BRepMesh leaves none. Each face now moves its points to the
 // common corner as far as it moves them to a corner of its own.
 TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
-    const std::filesystem::path path = "/usr/share/freecad/Mod/Idf/Idflibs/SMB_DO_214AA.stp";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (freecad)";
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const auto result = tessellateGuaranteed(shape, 1e-3);
+    const auto shape = test::sampleModel(test::kFreecadIdfLibrary / "SMB_DO_214AA.stp");
+    if (!shape) GTEST_SKIP() << "FreeCAD's IDF library not found";
+    const auto result = tessellateGuaranteed(*shape, 1e-3);
     EXPECT_TRUE(result.failures.empty());
     EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
-    EXPECT_TRUE(occ::verifyMesh(shape, result.mesh, result.tolerance).pass);
+    EXPECT_TRUE(occ::verifyMesh(*shape, result.mesh, result.tolerance).pass);
 }
 
 // A curve's end moves onto its B-rep vertex's foot on the surface, but not by sliding along a
@@ -171,12 +171,11 @@ TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
 // to 0.5; the points later cut into that edge's chord in (u, v) lay inside the face, and the
 // neighbouring face's triangles were 0.33 (40 T) off it at relative 1e-4.
 TEST(OpenEdges, AnEndAtAPoleKeepsItsSide) {
-    const std::filesystem::path path = "/usr/share/opencascade/data/occ/shell1.brep";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found (occt-misc)";
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const auto result = tessellateGuaranteed(shape, 1e-4);
+    const auto shape = test::sampleModel(test::kOpenCascadeSamples / "shell1.brep");
+    if (!shape) GTEST_SKIP() << "OpenCASCADE's samples not found";
+    const auto result = tessellateGuaranteed(*shape, 1e-4);
     EXPECT_TRUE(result.failures.empty());
-    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
+    const occ::VerificationReport report = occ::verifyMesh(*shape, result.mesh, result.tolerance);
     EXPECT_TRUE(report.facesOverTolerance.empty());
     EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
 }

@@ -6,21 +6,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
+#include "SampleModels.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
-#include "occ/ShapeReader.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
 namespace {
 
-const std::filesystem::path kDiode = "/usr/share/freecad/Mod/Idf/Idflibs/SOD_323.stp";
-
 TEST(SliverFace, KeepsItsOwnTrianglesAndIsMeasured) {
-    if (!std::filesystem::exists(kDiode)) GTEST_SKIP() << kDiode << " not found (freecad)";
-    const TopoDS_Shape shape = occ::readShape(kDiode.string());
+    const auto sample = test::sampleModel(test::kFreecadIdfLibrary / "SOD_323.stp");
+    if (!sample) GTEST_SKIP() << "FreeCAD's IDF library not found";
+    const TopoDS_Shape& shape = *sample;
     const Model model = occ::importModel(shape);
     for (const double relative : {1e-3, 1e-4}) {
         TessellationOptions options;
