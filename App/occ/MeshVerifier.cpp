@@ -324,28 +324,34 @@ std::vector<char> trianglesNearBorder(const std::vector<std::array<int, 3>>& tri
     return near;
 }
 
-// BRepMesh's triangle count for the face alone at `deflection` (on a copy, as below), at the
-// benchmark's angular deflection (0.5 rad): the reference's own angular bound made MAT.brep's
-// count at the tolerance 739,960 (10 GB, 190 s) where 0.5 rad gives 91,762.
-int trianglesAtDeflection(const TopoDS_Face& face, double deflection) {
+// BRepMesh's triangulation of the face alone, and its location. A copy: meshing the shape's own
+// face would write triangulations into edges that the neighbouring faces, measured on other
+// threads, share.
+Handle(Poly_Triangulation)
+    triangulationOfCopy(const TopoDS_Face& face, double deflection, double angularDeflection,
+                        TopLoc_Location& location) {
     BRepBuilderAPI_Copy copier(face, Standard_True, Standard_False);
     const TopoDS_Face copy = TopoDS::Face(copier.Shape());
-    BRepMesh_IncrementalMesh mesher(copy, deflection, Standard_False, 0.5, Standard_False);
+    BRepMesh_IncrementalMesh mesher(copy, deflection, Standard_False, angularDeflection,
+                                    Standard_False);
+    return BRep_Tool::Triangulation(copy, location);
+}
+
+// BRepMesh's triangle count for the face alone at `deflection`, at the benchmark's angular
+// deflection (0.5 rad): the reference's own angular bound made MAT.brep's count at the
+// tolerance 739,960 (10 GB, 190 s) where 0.5 rad gives 91,762.
+int trianglesAtDeflection(const TopoDS_Face& face, double deflection) {
     TopLoc_Location location;
-    const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(copy, location);
+    const Handle(Poly_Triangulation) triangulation =
+        triangulationOfCopy(face, deflection, 0.5, location);
     return triangulation.IsNull() ? 0 : triangulation->NbTriangles();
 }
 
 ReferenceMesh referenceMeshOf(const TopoDS_Face& face, double deflection) {
-    // A copy: meshing the shape's own face would write triangulations into edges that the
-    // neighbouring faces, measured on other threads, share.
-    BRepBuilderAPI_Copy copier(face, Standard_True, Standard_False);
-    const TopoDS_Face copy = TopoDS::Face(copier.Shape());
-    BRepMesh_IncrementalMesh mesher(copy, deflection, Standard_False,
-                                    referenceAngularDeflection(deflection), Standard_False);
     ReferenceMesh result;
     TopLoc_Location location;
-    const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(copy, location);
+    const Handle(Poly_Triangulation) triangulation =
+        triangulationOfCopy(face, deflection, referenceAngularDeflection(deflection), location);
     if (triangulation.IsNull() || triangulation->NbTriangles() == 0) return result;
     const gp_Trsf& transformation = location.Transformation();
     for (int i = 1; i <= triangulation->NbNodes(); ++i)
@@ -604,24 +610,15 @@ public:
     }
 
 private:
-    // The largest distance from the corners, side middles and centroids of the face's
-    // triangles to the exact trimmed face, less the edge tolerance (the slack at a boundary).
+    // The largest distance from the samples of the face's triangles (FaceSamples) to the exact
+    // trimmed face, less the edge tolerance (the slack at a boundary).
     double deviationFromFace(double edgeTolerance) const {
         TrimmedFaceDistance distance(face_);
+        const FaceSamples samples(mesh_, triangles_);
         double worst = 0;
-        for (const std::uint32_t t : triangles_) {
-            const auto& corners = mesh_.triangles[t];
-            std::vector<Point3> samples;
-            for (int k = 0; k < 3; ++k) {
-                samples.push_back(mesh_.positions[corners[k]]);
-                samples.push_back(
-                    0.5 * (mesh_.positions[corners[k]] + mesh_.positions[corners[(k + 1) % 3]]));
-            }
-            samples.push_back((mesh_.positions[corners[0]] + mesh_.positions[corners[1]] +
-                               mesh_.positions[corners[2]]) /
-                              3);
-            for (const Point3& p : samples)
-                worst = std::max(worst, distance.distance(gp_Pnt(p.x(), p.y(), p.z())));
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            const Point3 p = samples[i];
+            worst = std::max(worst, distance.distance(gp_Pnt(p.x(), p.y(), p.z())));
         }
         return std::max(0.0, worst - edgeTolerance);
     }

@@ -1501,6 +1501,11 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // most 1e-2 T moves its triangles by no more, within the budget's slack.
     WeldedPoints welded = weldPoints(mesh.positions, used, 1e-2 * options.tolerance);
     const std::vector<std::uint32_t>& remap = welded.remap;
+    // whether a triangle keeps three points after the weld
+    auto keepsThreePoints = [&](const std::array<std::uint32_t, 3>& c) {
+        return remap[c[0]] != remap[c[1]] && remap[c[1]] != remap[c[2]] &&
+               remap[c[0]] != remap[c[2]];
+    };
     // A face narrower than the weld loses every triangle to it: SOD_323.stp of FreeCAD's IDF
     // library has faces 1.5e-6 mm wide along 1.8 mm edges, whose area (2.6e-6) exceeds T^2 at
     // relative 1e-4 (T = 3.1e-4), where the verifier and meshjudge count a face without
@@ -1515,12 +1520,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::vector<SliverTriangle> slivers;
     {
         std::vector<char> survives(faceCount, 0);
-        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-            const auto& c = mesh.triangles[t];
-            if (remap[c[0]] != remap[c[1]] && remap[c[1]] != remap[c[2]] &&
-                remap[c[0]] != remap[c[2]])
-                survives[mesh.triangleFaces[t] - 1] = 1;
-        }
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+            if (keepsThreePoints(mesh.triangles[t])) survives[mesh.triangleFaces[t] - 1] = 1;
         // only a face whose own triangles' area exceeds T^2, as the judges' rule for a missing
         // face; one of no area (two edges on one curve) is listed as before
         std::vector<double> area(faceCount, 0);
@@ -1559,8 +1560,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         mesh.triangleFaces.resize(out);
     };
     keepTriangles([&](std::size_t, std::array<std::uint32_t, 3>& corners) {
+        if (!keepsThreePoints(corners)) return false;
         for (auto& i : corners) i = remap[i];
-        return corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2];
+        return true;
     });
     // A face's own point that the weld moved onto a point of another face's chord (a thin band
     // of a trimmed cell along its boundary, 1e-6 of a millimetre wide on bottle.brep's thread)
