@@ -165,6 +165,21 @@ TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
     EXPECT_TRUE(occ::verifyMesh(*shape, result.mesh, result.tolerance).pass);
 }
 
+// An edge whose faces measured within the fixed share gap at its samples, but whose placed
+// points lie farther apart (nearer an end than the first sample): hammer.brep of OpenCASCADE's
+// samples at relative 1e-4, edges 77 and 79, up to 0.59 T apart within the first 4 % of edge
+// 79, kept one point per face there (16 open edges; BRepMesh at the same deflection has none).
+// The edge widens its gap to what its placed points need and is discretised again.
+TEST(OpenEdges, AnEdgeFartherApartAtItsPointsThanAtItsSamplesIsWidened) {
+    const auto shape = test::sampleModel(test::kOpenCascadeSamples / "hammer.brep");
+    if (!shape) GTEST_SKIP() << "OpenCASCADE's samples not found";
+    const auto result = tessellateGuaranteed(*shape, 1e-4);
+    EXPECT_TRUE(result.failures.empty());
+    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const occ::VerificationReport report = occ::verifyMesh(*shape, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+}
+
 // A curve's end moves onto its B-rep vertex's foot on the surface, but not by sliding along a
 // pole's row: shell1.brep of OpenCASCADE's samples (occt-misc, which libocct-foundation-dev
 // depends on) has a face whose corner is a pole (face 39), where an edge's end slid from u = 1
