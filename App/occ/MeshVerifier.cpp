@@ -56,12 +56,23 @@ constexpr double exactCheckFraction = 0.5;
 constexpr std::size_t minimumExactChecks = 8;
 constexpr std::size_t maximumExactChecks = 4000;
 constexpr std::size_t samplesPerFaceBudget = 200000;
-// The most triangles BRepMesh may give a face at the tolerance itself before its reference mesh
-// at tolerance / 10 is made: OpenCASCADE's sample MAT.brep (one B-spline face of 80 x 83 poles)
-// takes 91,762 at relative 1e-4, and its reference then grew past 15 GB in BRepMesh (160 s,
-// and no triangle). Such a face is left unmeasured, with the reason, instead of the machine's
-// memory running out.
-constexpr int mostTrianglesAtTolerance = 50000;
+// The reference for a face of many triangles. BRepMesh's reference at tolerance / 10 with
+// meshjudge's angular bound grows far faster than the face's own mesh where the surface's normal
+// turns a lot: OpenCASCADE's sample MAT.brep (one bumpy B-spline face of 80 x 83 poles), whose
+// guaranteed mesh has 15,166 triangles at relative 1e-3, got a reference of 739,960 (10 GB,
+// 190 s), and at 1e-4 (81,247) one past 15 GB. A face with more than
+// `trianglesForAngledReference` triangles takes the reference without the angular bound
+// (0.5 rad, the benchmark's BRepMesh; the linear deflection is its bound either way), and one
+// with more than `trianglesForFineReference` a reference at tolerance / 3: MAT.brep at 1e-4 then
+// 283,210 reference triangles (14 s, 0.9 GB), the generated revolved_profile.brep at 1e-4
+// (51,229) 304,979 (5 s, 0.3 GB). The deviation is measured by projecting onto the exact
+// surface either way; a coarser reference has fewer points at which the cover is measured, and
+// more samples near its border to classify exactly. A face of more than
+// `mostTrianglesToMeasure` is left unmeasured, with the reason.
+constexpr std::size_t trianglesForAngledReference = 10000;
+constexpr std::size_t trianglesForFineReference = 50000;
+constexpr std::size_t mostTrianglesToMeasure = 200000;
+constexpr double coarseReferenceDivisor = 3.0, coarseReferenceAngle = 0.5;
 // meshjudge's reference mesh is FreeCAD's shape.tessellate, which asks BRepMesh for
 // min(0.1, 5 * deflection + 0.005) rad (FreeCAD's defaultAngularDeflection: BRepMesh misses
 // linear deflections on NURBS, so FreeCAD bounds the angle too). That angle depends on the
@@ -337,21 +348,11 @@ Handle(Poly_Triangulation)
     return BRep_Tool::Triangulation(copy, location);
 }
 
-// BRepMesh's triangle count for the face alone at `deflection`, at the benchmark's angular
-// deflection (0.5 rad): the reference's own angular bound made MAT.brep's count at the
-// tolerance 739,960 (10 GB, 190 s) where 0.5 rad gives 91,762.
-int trianglesAtDeflection(const TopoDS_Face& face, double deflection) {
-    TopLoc_Location location;
-    const Handle(Poly_Triangulation) triangulation =
-        triangulationOfCopy(face, deflection, 0.5, location);
-    return triangulation.IsNull() ? 0 : triangulation->NbTriangles();
-}
-
-ReferenceMesh referenceMeshOf(const TopoDS_Face& face, double deflection) {
+ReferenceMesh referenceMeshOf(const TopoDS_Face& face, double deflection, double angle) {
     ReferenceMesh result;
     TopLoc_Location location;
     const Handle(Poly_Triangulation) triangulation =
-        triangulationOfCopy(face, deflection, referenceAngularDeflection(deflection), location);
+        triangulationOfCopy(face, deflection, angle, location);
     if (triangulation.IsNull() || triangulation->NbTriangles() == 0) return result;
     const gp_Trsf& transformation = location.Transformation();
     for (int i = 1; i <= triangulation->NbNodes(); ++i)
@@ -578,16 +579,18 @@ public:
                 " above OpenCASCADE's confusion distance (1e-7)";
             return result;
         }
-        if (const int coarse = trianglesAtDeflection(face_, tolerance_);
-            coarse > mostTrianglesAtTolerance) {
+        if (triangles_.size() > mostTrianglesToMeasure) {
             result.measured = false;
-            result.problem = "too large to measure: BRepMesh gives it " + std::to_string(coarse) +
-                             " triangles at the tolerance, and the reference mesh at tolerance / " +
-                             std::to_string(static_cast<int>(referenceDivisor)) +
-                             " would take about ten times as many or more";
+            result.problem = "too large to measure: " + std::to_string(triangles_.size()) +
+                             " triangles, more than the " + std::to_string(mostTrianglesToMeasure) +
+                             " for which OpenCASCADE's reference mesh of the face is made";
             return result;
         }
-        ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_);
+        double angle = referenceAngularDeflection(referenceDeflection_);
+        if (triangles_.size() > trianglesForAngledReference) angle = coarseReferenceAngle;
+        if (triangles_.size() > trianglesForFineReference)
+            referenceDeflection_ = tolerance_ / coarseReferenceDivisor;
+        ReferenceMesh reference = referenceMeshOf(face_, referenceDeflection_, angle);
         if (reference.triangles.empty()) reference = gridReferenceOf(face_, referenceDeflection_);
         if (reference.triangles.empty() && faceArea(face_) <= tolerance_ * tolerance_) {
             // A face of no area (two edges along one curve: SOD_323.stp of FreeCAD's IDF
