@@ -298,6 +298,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::vector<double> narrowGap(faceCount, 0);
     constexpr double margin = 1.2;
     const double largestGap = 2 * 0.95 * options.tolerance;
+    // whether each face of edge e can give share gap `gap` out of its other shares
+    auto everyFaceAffords = [&](size_t e, double gap) {
+        for (const auto& u : uses[e])
+            if (!(gap <= faceBudgets[u.face].largestShareGap(options.tolerance, options.mode)))
+                return false;
+        return true;
+    };
     if (options.mode == ErrorMode::Guaranteed) {
         constexpr int samples = 32;
         std::vector<double> needed(model.edges.size(), 0), sharedNeed(model.edges.size(), 0);
@@ -332,11 +339,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::vector<double> faceGap(faceCount, budget.shareGap);
         for (size_t e = 0; e < model.edges.size(); ++e) {
             if (!(needed[e] > budget.shareGap)) continue;
-            bool affordable = true;
-            for (const auto& u : uses[e])
-                affordable &= needed[e] <=
-                              faceBudgets[u.face].largestShareGap(options.tolerance, options.mode);
-            if (!affordable) continue;
+            if (!everyFaceAffords(e, needed[e])) continue;
             edgeShareGap[e] = needed[e];
             for (const auto& u : uses[e]) faceGap[u.face] = std::max(faceGap[u.face], needed[e]);
         }
@@ -910,11 +913,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         std::set<int> widened;
         for (size_t e = 0; e < model.edges.size(); ++e) {
             if (!(wider[e] > edgeShareGap[e])) continue;
-            bool affordable = true;
-            for (const auto& u : uses[e])
-                affordable &= wider[e] <=
-                              faceBudgets[u.face].largestShareGap(options.tolerance, options.mode);
-            if (!affordable) continue;
+            if (!everyFaceAffords(e, wider[e])) continue;
             edgeShareGap[e] = wider[e];
             for (const auto& u : uses[e]) {
                 faceBudgets[u.face] = faceBudgets[u.face].withShareGap(

@@ -71,6 +71,15 @@ TessellationResult tessellateGuaranteed(const TopoDS_Shape& shape, double relati
     return tessellateModel(model, options);
 }
 
+// A sample model's guaranteed mesh at `relative`: every face meshed, no open edge, verify PASS.
+void expectClosedAndWithinTolerance(const TopoDS_Shape& shape, double relative) {
+    const auto result = tessellateGuaranteed(shape, relative);
+    EXPECT_TRUE(result.failures.empty());
+    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+}
+
 // Open edges of a corpus model's guaranteed mesh at `relative`; none when the corpus is absent.
 std::optional<std::size_t> corpusOpenEdges(const char* name, double relative) {
     const auto path = kCorpus / name;
@@ -159,10 +168,7 @@ TEST(OpenEdges, SloppyEdgesWithinTheirFacesShareGapAreClosed) {
 TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
     const auto shape = test::sampleModel(test::kFreecadIdfLibrary / "SMB_DO_214AA.stp");
     if (!shape) GTEST_SKIP() << "FreeCAD's IDF library not found";
-    const auto result = tessellateGuaranteed(*shape, 1e-3);
-    EXPECT_TRUE(result.failures.empty());
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
-    EXPECT_TRUE(occ::verifyMesh(*shape, result.mesh, result.tolerance).pass);
+    expectClosedAndWithinTolerance(*shape, 1e-3);
 }
 
 // An edge whose faces measured within the fixed share gap at its samples, but whose placed
@@ -173,11 +179,7 @@ TEST(OpenEdges, ASloppyWiresCornerIsSharedWhereEachFaceAllows) {
 TEST(OpenEdges, AnEdgeFartherApartAtItsPointsThanAtItsSamplesIsWidened) {
     const auto shape = test::sampleModel(test::kOpenCascadeSamples / "hammer.brep");
     if (!shape) GTEST_SKIP() << "OpenCASCADE's samples not found";
-    const auto result = tessellateGuaranteed(*shape, 1e-4);
-    EXPECT_TRUE(result.failures.empty());
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
-    const occ::VerificationReport report = occ::verifyMesh(*shape, result.mesh, result.tolerance);
-    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+    expectClosedAndWithinTolerance(*shape, 1e-4);
 }
 
 // A curve's end moves onto its B-rep vertex's foot on the surface, but not by sliding along a
