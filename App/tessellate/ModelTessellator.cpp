@@ -870,6 +870,39 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         const std::vector<int> edges(again.begin(), again.end());
         forEachIndex(size_t(0), edges.size(), [&](size_t i) { discretizeOnce(edges[i]); });
     }
+    // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
+    // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
+    // point near both surfaces then serves both faces. It is found from the faces' own points
+    // (nearestCommonPoint: where the surfaces meet, else averaged projections); each face takes its
+    // foot's (u, v), so the shared vertex is at most the edge's shareGap/2 off each surface (the
+    // share budget). The face's boundary moves inside its surface, by at most the edge's own
+    // tolerance: the B-rep places the true edge within that of each trimming curve, and it is
+    // what meshjudge and the verifier allow at a face's boundary (a sample counts as
+    // (distance to the trimmed face) - (largest tolerance of the face's edges)).
+    // trj7_b1-ec-214.stp's 0.5 mm edges: trimming curves up to 0.5 mm (14 T at relative 1e-4)
+    // from the 3D edge, which lies on both surfaces within 0.003 T.
+    auto commonPoint = [&](std::size_t e, std::size_t k) -> std::optional<CommonPoint> {
+        const auto& poly = polylines[e];
+        const std::size_t useCount = uses[e].size();
+        std::vector<Point3> own(useCount);
+        std::vector<Point2> start(useCount);
+        for (std::size_t u = 0; u < useCount; ++u) {
+            start[u] = poly.uv[u][k];
+            own[u] = model.faces[uses[e][u].face].surface.point(start[u].x(), start[u].y());
+        }
+        const double halfGap = 0.5 * edgeShareGap[e];
+        CommonPoint common = nearestCommonPoint(e, anchorsOf(e, poly.params[k], own), start,
+                                                halfGap, edgeShareGap[e]);
+        if (!(common.offset <= halfGap)) return std::nullopt;
+        return common;
+    };
+    // Whether the faces' own points of edge e at one place are shared as one vertex midway
+    // between them: within the fixed share gap, or within the edge's own where it is wider or
+    // narrower.
+    auto sharedMidway = [&](size_t e, const std::vector<Point3>& points) {
+        return (spread(points) <= budget.shareGap && edgeShareGap[e] >= budget.shareGap) ||
+               farthest(points, centroid(points)) <= 0.5 * edgeShareGap[e];
+    };
     // The other edges are checked at their points too. An edge whose samples all came within
     // its gap may still have a point farther apart (between the samples, or nearer an end than
     // the first sample): where its faces have no common point within the gap there either, that
@@ -893,18 +926,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                     start[u] = poly.uv[u][k];
                     own[u] = model.faces[uses[e][u].face].surface.point(start[u].x(), start[u].y());
                 }
-                // shared midway, as shareVertices does
-                const double midway = farthest(own, centroid(own));
-                if (spread(own) <= budget.shareGap || midway <= halfGap) continue;
-                // or where the surfaces meet, as shareVertices finds it
-                const auto anchors = anchorsOf(e, poly.params[k], own);
-                if (nearestCommonPoint(e, anchors, start, halfGap, edgeShareGap[e]).offset <=
-                    halfGap)
-                    continue;
+                // shared as shareVertices shares it: midway, or where the surfaces meet
+                if (sharedMidway(e, own) || commonPoint(e, k)) continue;
                 // a wider gap shares the point midway, or where the surfaces meet if that is
                 // nearer
-                const double offset =
-                    nearestCommonPoint(e, anchors, start, halfGap, largestGap).offset;
+                const double midway = farthest(own, centroid(own));
+                const double offset = nearestCommonPoint(e, anchorsOf(e, poly.params[k], own),
+                                                         start, halfGap, largestGap)
+                                          .offset;
                 farthestOffset = std::max(
                     farthestOffset, std::isfinite(offset) ? std::min(offset, midway) : midway);
             }
@@ -1193,32 +1222,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             return it->second;
         return vertexOfBrepVertex.at({vertex, face});
     };
-    // A sloppy edge's faces are farther apart than the share gap, yet they often meet at an
-    // angle or overlap along the surfaces (the gap lies in the surfaces, not across them): a
-    // point near both surfaces then serves both faces. It is found from the faces' own points
-    // (nearestCommonPoint: where the surfaces meet, else averaged projections); each face takes its
-    // foot's (u, v), so the shared vertex is at most the edge's shareGap/2 off each surface (the
-    // share budget). The face's boundary moves inside its surface, by at most the edge's own
-    // tolerance: the B-rep places the true edge within that of each trimming curve, and it is
-    // what meshjudge and the verifier allow at a face's boundary (a sample counts as
-    // (distance to the trimmed face) - (largest tolerance of the face's edges)).
-    // trj7_b1-ec-214.stp's 0.5 mm edges: trimming curves up to 0.5 mm (14 T at relative 1e-4)
-    // from the 3D edge, which lies on both surfaces within 0.003 T.
-    auto commonPoint = [&](std::size_t e, std::size_t k) -> std::optional<CommonPoint> {
-        const auto& poly = polylines[e];
-        const std::size_t useCount = uses[e].size();
-        std::vector<Point3> own(useCount);
-        std::vector<Point2> start(useCount);
-        for (std::size_t u = 0; u < useCount; ++u) {
-            start[u] = poly.uv[u][k];
-            own[u] = model.faces[uses[e][u].face].surface.point(start[u].x(), start[u].y());
-        }
-        const double halfGap = 0.5 * edgeShareGap[e];
-        CommonPoint common = nearestCommonPoint(e, anchorsOf(e, poly.params[k], own), start,
-                                                halfGap, edgeShareGap[e]);
-        if (!(common.offset <= halfGap)) return std::nullopt;
-        return common;
-    };
     // the shared vertices of one edge; false where a point stays one per face (a sloppy edge)
     auto shareVertices = [&](size_t e) {
         auto& poly = polylines[e];
@@ -1239,8 +1242,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             }
             std::vector<Point3> points;
             for (const auto& c : curves) points.push_back(c.point(poly.params[k]));
-            if ((spread(points) <= budget.shareGap && edgeShareGap[e] >= budget.shareGap) ||
-                farthest(points, centroid(points)) <= 0.5 * edgeShareGap[e]) {
+            if (sharedMidway(e, points)) {
                 const auto id = static_cast<std::uint32_t>(positions.size());
                 positions.push_back(centroid(points));
                 offsets.push_back(farthest(points, positions.back()));
