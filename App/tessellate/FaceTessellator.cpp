@@ -1216,6 +1216,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             if (const auto& origin = loop.origins[s.index]; origin.edge >= 0)
                 mesh.openCuts.push_back(
                     {origin.edge, origin.segment, origin.use, position, p.X, p.Y});
+            if (choices_.freeEdgesOnSurface)
+                return ownVertex(p, (1 - t) * a.uv + t * b.uv, nullptr);
             return ownVertex(p, (1 - t) * a.uv + t * b.uv, &position);
         }
         return ownVertex(p, frame_->toParameter(p.X, p.Y), nullptr);

@@ -32,8 +32,14 @@ struct CellChoices {
     // for corners on its sides. Not on a face with free edges: the points its cells leave
     // on their chords are dropped where the triangles change little
     // (removeOpenBoundaryPoints), and larger cells change them more (wing.brep at relative
-    // 1e-4: 166 open edges instead of 98, BRepMesh 100).
+    // 1e-4: 166 open edges instead of 98, BRepMesh 100). Unless those points go onto the
+    // surface (freeEdgesOnSurface): then they stay, and the bound holds.
     bool filledCellsBySides = true;
+    // Every chord of the face lies on its surface (ErrorBudget::forChordsOnSurface), free edges'
+    // too (ModelTessellator: a free edge as its face's curve use): a point that a cell side cuts
+    // on a chord no other face knows goes onto the surface at its (u, v), i.e. onto the curve,
+    // not onto the chord, so that the cell's triangles keep the bound for corners on its sides.
+    bool freeEdgesOnSurface = false;
     // The face's kd-tree lines with even columns (KdTreeGrid::setEvenColumns), as its edges were
     // discretised on them; used where their frame is this face's.
     std::optional<std::array<KdTreeGrid, 2>> evenColumns;

@@ -26,6 +26,7 @@
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/FoldedPairs.hpp"
 #include "tessellate/KdTreeAlignedHalving.hpp"
+#include "tessellate/LoneFaces.hpp"
 #include "tessellate/NeedleSplit.hpp"
 #include "tessellate/PointWeld.hpp"
 #include "tessellate/SurfaceMeeting.hpp"
@@ -78,12 +79,10 @@ double spread(const std::vector<Point3>& points) {
     return d;
 }
 
-}  // namespace
-
-TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
-    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-        throw std::invalid_argument("the tolerance must be a positive number, not " +
-                                    std::to_string(options.tolerance));
+// One tessellation of the model (tessellateModel). freeEdgesAsCurveUses: a free edge may be its
+// face's curve use (see boxRegion below); tessellateModel asks for it on lone faces only.
+TessellationResult tessellateOnce(const Model& model, const TessellationOptions& options,
+                                  bool freeEdgesAsCurveUses) {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<tbb::global_control> threads;
     if (options.threads > 1)
@@ -402,8 +401,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // segments go onto that face's surface, i.e. onto the curve, so that its triangles are all
     // within its surface share. Its chords then do not limit the edge's share. At most one use
     // per edge: a point is on one surface's curve at the (u, v) it has there, not on two.
-    // Only a shared edge: a free one keeps the points cell sides add on its chords; and not one
-    // with a widened share gap, whose shared points are off every surface.
+    // Only a shared edge (but see freeEdgesAsCurveUses below): a free one keeps the points cell
+    // sides add on its chords; and not one with a widened share gap, whose shared points are off
+    // every surface.
     // Where two faces of an edge that is not exact both have every curve straight, only one of
     // them can have all its chords on its surface (chordsOnSurface, below): the edge goes to
     // the face whose surface that saves more kd-tree cells (surfaceCellEstimate at its share
@@ -413,9 +413,32 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     const auto exactEdge = [&](int e) {
         return model.edges[e].tolerance <= kExactEdge * options.tolerance;
     };
+    // The kd-tree lines of each face whose frame is known before its edges are discretised
+    // (KdTreeAlignedHalving; used below for the edges and the even columns).
+    std::vector<FaceKdTreeLines> faceLines(faceCount);
+    forEachIndex(0, faceCount, [&](int f) {
+        if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
+    });
+    // With freeEdgesAsCurveUses, a free edge can be its face's curve use too, where the face's
+    // region is its whole frame box (every curve straight along one of the box's sides: an open
+    // cylinder's circles, a bent rectangle) and the edge is exact: the points that cell sides
+    // add to its chords then go onto the surface, i.e. onto the curve (CellChoices::
+    // freeEdgesOnSurface), and the face spends no trimming share (forChordsOnSurface). Those
+    // points stay, where removeOpenBoundaryPoints drops the ones on a chord: fewer open edges
+    // or more, as the face's columns fall along its free edges (tessellateModel keeps the
+    // better of the two for a lone face).
+    std::vector<char> boxRegion(faceCount, 0);
+    if (options.mode == ErrorMode::Guaranteed)
+        forEachIndex(0, faceCount, [&](int f) {
+            const auto grids = faceLines[f].forColumns();
+            boxRegion[f] = freeEdgesAsCurveUses && failure[f].empty() && faceLines[f].both() &&
+                           grids && regionIsTheBox(model.faces[f], *grids);
+        });
     std::vector<std::vector<char>> straightUse(model.edges.size());
     for (size_t e = 0; e < model.edges.size(); ++e)
-        if (uses[e].size() >= 2 && edgeShareGap[e] <= budget.shareGap)
+        if ((uses[e].size() >= 2 && edgeShareGap[e] <= budget.shareGap) ||
+            (uses[e].size() == 1 && !model.edges[e].degenerated && boxRegion[uses[e][0].face] &&
+             exactEdge(int(e))))
             for (const auto& use : uses[e])
                 straightUse[e].push_back(curveOnSurface(use).straightInParameterPlane());
     auto curveStraight = [&](int f, int l, int c) {
@@ -537,22 +560,16 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         edge.setTrimming(trimming);
         return edge;
     };
-    // The kd-tree lines of each face whose frame is known before its edges are discretised
-    // (KdTreeAlignedHalving). An edge halves its pieces on the lines of one face it is straight
-    // in or runs along (BentCurves: narrow bands first): its curve use's if it can, another's
-    // otherwise.
-    // The points of the edge then lie where that face's kd-tree cuts, and its cells add no
-    // points between them. Where only one axis is known (a sloppy band's side a hair past its
-    // iso-line), its lines still place the points of the curves that run along it (faceLines):
-    // both long sides of bottle.brep's thread flanks then have their points on the flank's
-    // columns, which cut their sides 347 times at relative 1e-4 instead of 731.
-    // The even columns below are set on these lines too, so that edges follow them.
-    std::vector<FaceKdTreeLines> faceLines(faceCount);
-    forEachIndex(0, faceCount, [&](int f) {
-        if (failure[f].empty()) faceLines[f] = kdTreeLinesBeforeDiscretisation(model.faces[f]);
-    });
-    // Even columns (evenColumnLines) where a face's region is its whole frame box, or most of
-    // it (kEvenColumnsRegionShare). A face with a free edge bounds the cells at its boundary as
+    // The kd-tree lines of each face (faceLines, above). An edge halves its pieces on the lines of
+    // one face it is straight in or runs along (BentCurves: narrow bands first): its curve use's if
+    // it can, another's otherwise. The points of the edge then lie where that face's kd-tree cuts,
+    // and its cells add no points between them. Where only one axis is known (a sloppy band's side
+    // a hair past its iso-line), its lines still place the points of the curves that run along it
+    // (faceLines): both long sides of bottle.brep's thread flanks then have their points on the
+    // flank's columns, which cut their sides 347 times at relative 1e-4 instead of 731. The even
+    // columns below are set on these lines too, so that edges follow them. Even columns
+    // (evenColumnLines) where a face's region is its whole frame box, or most of it
+    // (kEvenColumnsRegionShare). A face with a free edge bounds the cells at its boundary as
     // trimmed ones (CellChoices::filledCellsBySides), which then split within their columns:
     // in guaranteed mode it takes them too (wing.brep at relative 1e-3: 734 triangles instead
     // of 857, 36 open edges instead of 37); the approximate mode's estimate went past the
@@ -1385,7 +1402,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             choices.splitThroughBoundaryPoints = options.splitThroughBoundaryPoints;
             choices.flatCellsByDistance = options.flatCellsByDistance;
             choices.middleSplits = options.middleSplits;
-            choices.filledCellsBySides = !hasFreeEdge(f);
+            choices.filledCellsBySides = !hasFreeEdge(f) || chordsOnSurface[f];
+            choices.freeEdgesOnSurface = hasFreeEdge(f) && chordsOnSurface[f];
             if (hasEvenColumns(f)) choices.evenColumns = faceLines[f].forColumns();
             tessellators[f] = std::make_unique<FaceTessellator>(model.faces[f], faceBudgets[f],
                                                                 options.mode, choices);
@@ -1688,6 +1706,48 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     std::sort(result.failures.begin(), result.failures.end(),
               [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace
+
+TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
+    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+        throw std::invalid_argument("the tolerance must be a positive number, not " +
+                                    std::to_string(options.tolerance));
+    const auto start = std::chrono::steady_clock::now();
+    TessellationResult result = tessellateOnce(model, options, false);
+    // A lone face (LoneFaces.hpp) whose region is its whole frame box is tessellated again on
+    // its own with its free edges as its curve uses: no trimming share, the cells at its border
+    // bounded for corners on their sides, but the points its cells cut on its free chords stay
+    // on the curve, where the first tessellation drops them from the chord. Which has fewer
+    // open edges depends on how evenly the surface bends along those chords: OpenCASCADE's
+    // face1.brep (a bent rectangle) at relative 1e-3 takes 50 instead of 63 (BRepMesh at the
+    // same deflection: 58), an open cylinder of FreeCAD's FEM tests at 1e-4 112 instead of 151
+    // (BRepMesh: 140); the generated revolved_profile.brep, whose small end circles would carry
+    // the columns of its bulge, 133 instead of 55. The one with fewer open edges is kept, then
+    // the one with fewer triangles.
+    if (options.mode == ErrorMode::Guaranteed && options.freeEdgesOnSurface &&
+        options.freeEdgesTakeSurfaceShare && !options.keepFaceVertices) {
+        std::vector<char> failed(model.faces.size(), 0);
+        for (const auto& failure : result.failures) failed[failure.face - 1] = 1;
+        TessellationOptions alone = options;
+        alone.progress = nullptr;
+        for (const int f : loneBoxFaces(model, kExactEdge * options.tolerance)) {
+            if (failed[f]) continue;
+            TessellationResult retried = tessellateOnce(loneFaceModel(model, f), alone, true);
+            if (!retried.failures.empty()) continue;
+            const std::size_t before = faceOpenEdges(result.mesh, f + 1);
+            const std::size_t after = faceOpenEdges(retried.mesh, 1);
+            const std::size_t trianglesBefore = static_cast<std::size_t>(std::count(
+                result.mesh.triangleFaces.begin(), result.mesh.triangleFaces.end(), f + 1));
+            if (after < before ||
+                (after == before && retried.mesh.triangles.size() < trianglesBefore))
+                replaceFaceTriangles(result.mesh, f + 1, retried.mesh);
+        }
+    }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
