@@ -516,7 +516,14 @@ struct BoundaryIndex {
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
                                  ErrorMode mode, const CellChoices& choices)
-    : face_(face), budget_(budget), mode_(mode), choices_(choices), patches_(face.surface) {}
+    : face_(face),
+      budget_(budget),
+      mode_(mode),
+      choices_(choices),
+      patches_(face.surface),
+      // flat to a twentieth of the surface share: the triangles in its plane spend at most twice
+      // that of the share, which the kd-tree's cells would have spent in full
+      plane_(facePlane(face.surface, 0.05 * budget.surface)) {}
 
 FaceTessellator::~FaceTessellator() = default;
 
@@ -1075,15 +1082,7 @@ struct BoundaryLookup {
 };
 }  // namespace
 
-std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
-    const std::vector<BoundaryLoop>& loops) {
-    if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
-    setFrame(loops);
-    const Paths region = regionOf(loops);
-    double area = 0;
-    for (const auto& p : region) area += ClipperLib::Area(p);
-    if (!(std::abs(area) > 0)) throw FaceWithoutArea("the trimming loops enclose no area");
-    const bool simpleRegion = isOneRingWithoutTouch(region);
+void FaceTessellator::buildLeaves(const Paths& region, bool simpleRegion) {
     // The bound cuts a cell across its even columns where that is the larger error, and the
     // rows cut so run over all the columns in the cell: each column then takes the rows its
     // neediest neighbour needs. Where a column's rows settle sooner in some columns than in
@@ -1116,6 +1115,33 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
             toleranceReached_ = rowsFirstReached;
         }
     }
+}
+
+std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
+    const std::vector<BoundaryLoop>& loops) {
+    if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
+    setFrame(loops);
+    const Paths region = regionOf(loops);
+    double area = 0;
+    for (const auto& p : region) area += ClipperLib::Area(p);
+    if (!(std::abs(area) > 0)) throw FaceWithoutArea("the trimming loops enclose no area");
+    const bool simpleRegion = isOneRingWithoutTouch(region);
+    // A face in a plane whose loops make one polygon there takes no kd-tree: triangulate makes
+    // its triangles in the plane, and no cell side cuts its chords (the loops' points are its
+    // surface's at their (u, v) here, within the share gap of the points it gets).
+    if (plane_) {
+        std::vector<std::vector<Point3>> rings;
+        for (const auto& loop : loops) {
+            rings.emplace_back();
+            for (const auto& bp : loop.points)
+                rings.back().push_back(face_.surface.point(bp.uv.x(), bp.uv.y()));
+        }
+        if (triangulateInPlane(*plane_, rings)) {
+            leaves_.clear();
+            return {};
+        }
+    }
+    buildLeaves(region, simpleRegion);
 
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)
@@ -1154,6 +1180,24 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                                       const std::vector<double>& sharedOffsets) {
     FaceMesh mesh;
     const Paths region = regionOf(loops);
+    // A face in a plane (FacePlane) is one polygon of its loops' points, triangulated by their
+    // coordinates in the plane: every triangle lies in the plane (within the flatness, and the
+    // shared points' offsets, which its unspent surface share covers), and together they tile
+    // the polygon of its chords exactly, as the kd-tree's triangles, mapped from (u, v), do
+    // within their bound.
+    std::optional<std::vector<std::array<std::uint32_t, 3>>> inPlane;
+    if (plane_) {
+        std::vector<std::vector<Point3>> rings;
+        for (const auto& loop : loops) {
+            rings.emplace_back();
+            for (const auto& bp : loop.points) rings.back().push_back(sharedPositions[bp.vertex]);
+        }
+        inPlane = triangulateInPlane(*plane_, rings);
+    }
+    // One that findCrossings left without a kd-tree, whose loops with their final points make
+    // no polygon in the plane, takes its kd-tree now: the points its cells cut on shared chords
+    // reach the other faces as open cuts (ModelTessellator, step 5b).
+    if (!inPlane && leaves_.empty()) buildLeaves(region, isOneRingWithoutTouch(region));
 
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)
@@ -1262,66 +1306,81 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         return atPole;
     };
 
+    if (inPlane) {
+        std::vector<std::uint32_t> vertexOf;
+        for (const auto& loop : loops)
+            for (const auto& bp : loop.points) vertexOf.push_back(sharedVertex(bp.vertex, bp.uv));
+        for (const auto& t : *inPlane) {
+            const std::array<std::uint32_t, 3> tri{vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]};
+            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+            mesh.triangles.push_back(tri);
+        }
+    }
+
     // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
     std::vector<std::uint32_t> ids;
     std::vector<std::vector<IntegerPoint2>> integerRings;
-    forEachLeaf(
-        region, isOneRingWithoutTouch(region),
-        [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
-            ++mesh.cells;
-            for (const Paths& rings :
-                 polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines, oneSimpleRing)) {
-                ids.clear();
-                integerRings.resize(rings.size());
-                for (std::size_t r = 0; r < rings.size(); ++r) {
-                    const Path& ring = rings[r];
-                    std::vector<IntegerPoint2>& integerRing = integerRings[r];
-                    integerRing.clear();
-                    for (std::size_t i = 0; i < ring.size(); ++i) {
-                        const IntPoint& p = ring[i];
-                        if (ring.size() > 3 && !lines.isCorner(p) &&
-                            index.isCollinearOnChord(ring, i))
-                            continue;
-                        integerRing.push_back({p.X, p.Y});
-                        ids.push_back(resolve(p));
+    if (!inPlane)
+        forEachLeaf(
+            region, isOneRingWithoutTouch(region),
+            [&](const Leaf& leaf, const Paths& leafRegion, bool oneSimpleRing) {
+                ++mesh.cells;
+                for (const Paths& rings :
+                     polygonsOfLeaf(leafRegion, leaf.rect, leaf.full, lines, oneSimpleRing)) {
+                    ids.clear();
+                    integerRings.resize(rings.size());
+                    for (std::size_t r = 0; r < rings.size(); ++r) {
+                        const Path& ring = rings[r];
+                        std::vector<IntegerPoint2>& integerRing = integerRings[r];
+                        integerRing.clear();
+                        for (std::size_t i = 0; i < ring.size(); ++i) {
+                            const IntPoint& p = ring[i];
+                            if (ring.size() > 3 && !lines.isCorner(p) &&
+                                index.isCollinearOnChord(ring, i))
+                                continue;
+                            integerRing.push_back({p.X, p.Y});
+                            ids.push_back(resolve(p));
+                        }
                     }
-                }
-                if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
-                    // a whole cell without neighbours' points: its two triangles (section 7)
-                    mesh.triangles.push_back({ids[0], ids[1], ids[2]});
-                    mesh.triangles.push_back({ids[0], ids[2], ids[3]});
-                    continue;
-                }
-                if (leaf.full && integerRings.size() == 1) {
-                    // a whole cell with hanging points: no cap that could fold in space
-                    for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
-                        mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
-                    continue;
-                }
-                if (integerRings.size() == 1) {
-                    // a cell with one side at a pole: no triangle flat against the surface there
-                    const auto atPole = pointsAtPole(integerRings[0], ids, leaf.rect);
-                    const auto triangles = atPole.empty()
-                                               ? std::vector<std::array<std::uint32_t, 3>>{}
-                                               : triangulateCellAtPole(integerRings[0], atPole);
-                    for (const auto& t : triangles) {
+                    if (leaf.full && integerRings.size() == 1 && integerRings[0].size() == 4) {
+                        // a whole cell without neighbours' points: its two triangles (section 7)
+                        mesh.triangles.push_back({ids[0], ids[1], ids[2]});
+                        mesh.triangles.push_back({ids[0], ids[2], ids[3]});
+                        continue;
+                    }
+                    if (leaf.full && integerRings.size() == 1) {
+                        // a whole cell with hanging points: no cap that could fold in space
+                        for (const auto& t : triangulateCellWithoutCaps(integerRings[0]))
+                            mesh.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
+                        continue;
+                    }
+                    if (integerRings.size() == 1) {
+                        // a cell with one side at a pole: no triangle flat against the surface
+                        // there
+                        const auto atPole = pointsAtPole(integerRings[0], ids, leaf.rect);
+                        const auto triangles = atPole.empty()
+                                                   ? std::vector<std::array<std::uint32_t, 3>>{}
+                                                   : triangulateCellAtPole(integerRings[0], atPole);
+                        for (const auto& t : triangles) {
+                            const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
+                            // the pole's one vertex twice: no triangle (a spike of a face is then
+                            // left without any, and fanned over its boundary like other faces too
+                            // thin)
+                            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+                            mesh.triangles.push_back(tri);
+                        }
+                        if (!triangles.empty()) continue;
+                    }
+                    const Triangulation triangulation = triangulatePolygon(integerRings);
+                    for (const auto& t : triangulation.triangles) {
                         const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                        // the pole's one vertex twice: no triangle (a spike of a face is then left
-                        // without any, and fanned over its boundary like other faces too thin)
+                        // points the boundary shares (a pole, a snapped cut) make zero-area
+                        // triangles
                         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
                         mesh.triangles.push_back(tri);
                     }
-                    if (!triangles.empty()) continue;
                 }
-                const Triangulation triangulation = triangulatePolygon(integerRings);
-                for (const auto& t : triangulation.triangles) {
-                    const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                    // points the boundary shares (a pole, a snapped cut) make zero-area triangles
-                    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-                    mesh.triangles.push_back(tri);
-                }
-            }
-        });
+            });
 
     // positions and exact normals at every vertex (section 8), in one pass that shares the
     // basis functions of equal u and v values; a shared vertex keeps its edge's position (the

@@ -12,6 +12,7 @@
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceBoundary.hpp"
 #include "tessellate/FaceMesh.hpp"
+#include "tessellate/FlatFace.hpp"
 #include "tessellate/KdTreeGrid.hpp"
 #include "trim/TrimmedSurface.hpp"
 
@@ -71,6 +72,8 @@ public:
                          const std::vector<double>& sharedOffsets);
 
 private:
+    // the kd-tree over the region (both orders of the even lines where that matters)
+    void buildLeaves(const ClipperLib::Paths& region, bool simpleRegion);
     struct Leaf;
     struct Frame;
     void setFrame(const std::vector<BoundaryLoop>& loops);
@@ -93,6 +96,7 @@ private:
     ErrorMode mode_;
     CellChoices choices_;
     BezierPatchGrid patches_;
+    std::optional<FacePlane> plane_;  // where the surface lies in a plane (triangulate)
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;
