@@ -30,6 +30,18 @@ using ClipperLib::Paths;
 
 namespace {
 
+// The loops' points in space, one ring per loop, each point where `position` puts it.
+template <typename Position>
+std::vector<std::vector<Point3>> ringsInSpace(const std::vector<BoundaryLoop>& loops,
+                                              const Position& position) {
+    std::vector<std::vector<Point3>> rings;
+    for (const auto& loop : loops) {
+        rings.emplace_back();
+        for (const auto& bp : loop.points) rings.back().push_back(position(bp));
+    }
+    return rings;
+}
+
 // Integer steps across the boundary's bounding box (KdTreeGrid, which the edges align with).
 constexpr cInt kScale = kKdTreeFrameScale;
 // Deep enough for 2^-60 of a face; a face that needs more is broken, and is reported.
@@ -1130,13 +1142,9 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // its triangles in the plane, and no cell side cuts its chords (the loops' points are its
     // surface's at their (u, v) here, within the share gap of the points it gets).
     if (plane_) {
-        std::vector<std::vector<Point3>> rings;
-        for (const auto& loop : loops) {
-            rings.emplace_back();
-            for (const auto& bp : loop.points)
-                rings.back().push_back(face_.surface.point(bp.uv.x(), bp.uv.y()));
-        }
-        if (triangulateInPlane(*plane_, rings)) {
+        if (triangulateInPlane(*plane_, ringsInSpace(loops, [&](const BoundaryPoint& bp) {
+                return face_.surface.point(bp.uv.x(), bp.uv.y());
+            }))) {
             leaves_.clear();
             return {};
         }
@@ -1187,12 +1195,9 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     // within their bound.
     std::optional<std::vector<std::array<std::uint32_t, 3>>> inPlane;
     if (plane_) {
-        std::vector<std::vector<Point3>> rings;
-        for (const auto& loop : loops) {
-            rings.emplace_back();
-            for (const auto& bp : loop.points) rings.back().push_back(sharedPositions[bp.vertex]);
-        }
-        inPlane = triangulateInPlane(*plane_, rings);
+        inPlane = triangulateInPlane(*plane_, ringsInSpace(loops, [&](const BoundaryPoint& bp) {
+            return sharedPositions[bp.vertex];
+        }));
     }
     // One that findCrossings left without a kd-tree, whose loops with their final points make
     // no polygon in the plane, takes its kd-tree now: the points its cells cut on shared chords
