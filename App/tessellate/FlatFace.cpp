@@ -55,6 +55,7 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateInPlane(
     double extent = 0;
     for (const auto& ring : rings)
         for (const Point3& p : ring) {
+            if (!p.allFinite()) return std::nullopt;
             const Vector3 d = p - plane.origin;
             extent = std::max({extent, std::abs(d.dot(plane.e1)), std::abs(d.dot(plane.e2))});
         }

@@ -12,6 +12,7 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
+#include <cmath>
 #include <gp_Circ.hxx>
 #include <vector>
 
@@ -52,6 +53,10 @@ TEST(FlatFace, APlaneIsFoundFromItsControlPointsAndFollowsTheSurfacesNormal) {
     EXPECT_FALSE(facePlane(unevenPatch(0, 1e-3), 1e-4));
     // a saddle is not flat
     EXPECT_FALSE(facePlane(unevenPatch(1), 1e-2));
+    // nor a patch with a weight that is not positive (no hull to bound it)
+    BSplineSurface weightless = unevenPatch();
+    weightless.pole(1, 2) = HomogeneousPoint3::Zero();
+    EXPECT_FALSE(facePlane(weightless, 1e-2));
 }
 
 TEST(FlatFace, RingsAreTriangulatedInThePlaneOrRefused) {
@@ -70,8 +75,10 @@ TEST(FlatFace, RingsAreTriangulatedInThePlaneOrRefused) {
         area += 0.5 * normal.z();
     }
     EXPECT_NEAR(area, 12, 1e-12);
-    // a ring crossing itself (a bow tie) is no polygon
+    // a ring crossing itself (a bow tie) is no polygon, nor one with a point not a number
     EXPECT_FALSE(triangulateInPlane(plane, {{{0, 0, 0}, {4, 4, 0}, {4, 0, 0}, {0, 4, 0}}}));
+    EXPECT_FALSE(
+        triangulateInPlane(plane, {{{0, 0, 0}, {4, 0, 0}, {std::nan(""), 4, 0}, {0, 4, 0}}}));
 }
 
 // The uneven patch trimmed to a disk: the kd-tree's bounds of the cells the circle crosses,
