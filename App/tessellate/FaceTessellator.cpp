@@ -1311,15 +1311,16 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         return atPole;
     };
 
+    // a triangle on three distinct vertices; one that names a vertex twice has no area
+    auto addTriangle = [&mesh](const std::array<std::uint32_t, 3>& tri) {
+        if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2]) mesh.triangles.push_back(tri);
+    };
     if (inPlane) {
         std::vector<std::uint32_t> vertexOf;
         for (const auto& loop : loops)
             for (const auto& bp : loop.points) vertexOf.push_back(sharedVertex(bp.vertex, bp.uv));
-        for (const auto& t : *inPlane) {
-            const std::array<std::uint32_t, 3> tri{vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]};
-            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-            mesh.triangles.push_back(tri);
-        }
+        for (const auto& t : *inPlane)
+            addTriangle({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     }
 
     // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
@@ -1366,24 +1367,18 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                         const auto triangles = atPole.empty()
                                                    ? std::vector<std::array<std::uint32_t, 3>>{}
                                                    : triangulateCellAtPole(integerRings[0], atPole);
-                        for (const auto& t : triangles) {
-                            const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                            // the pole's one vertex twice: no triangle (a spike of a face is then
-                            // left without any, and fanned over its boundary like other faces too
-                            // thin)
-                            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-                            mesh.triangles.push_back(tri);
-                        }
+                        // the pole's one vertex twice: no triangle (a spike of a face is then
+                        // left without any, and fanned over its boundary like other faces too
+                        // thin)
+                        for (const auto& t : triangles)
+                            addTriangle({ids[t[0]], ids[t[1]], ids[t[2]]});
                         if (!triangles.empty()) continue;
                     }
                     const Triangulation triangulation = triangulatePolygon(integerRings);
-                    for (const auto& t : triangulation.triangles) {
-                        const std::array<std::uint32_t, 3> tri{ids[t[0]], ids[t[1]], ids[t[2]]};
-                        // points the boundary shares (a pole, a snapped cut) make zero-area
-                        // triangles
-                        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-                        mesh.triangles.push_back(tri);
-                    }
+                    // points the boundary shares (a pole, a snapped cut) make zero-area
+                    // triangles
+                    for (const auto& t : triangulation.triangles)
+                        addTriangle({ids[t[0]], ids[t[1]], ids[t[2]]});
                 }
             });
 

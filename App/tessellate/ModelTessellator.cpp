@@ -568,8 +568,8 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     // a hair past its iso-line), its lines still place the points of the curves that run along it
     // (faceLines): both long sides of bottle.brep's thread flanks then have their points on the
     // flank's columns, which cut their sides 347 times at relative 1e-4 instead of 731. The even
-    // columns below are set on these lines too, so that edges follow them. Even columns
-    // (evenColumnLines) where a face's region is its whole frame box, or most of it
+    // columns below are set on these lines too, so that edges follow them.
+    // Even columns (evenColumnLines) where a face's region is its whole frame box, or most of it
     // (kEvenColumnsRegionShare). A face with a free edge bounds the cells at its boundary as
     // trimmed ones (CellChoices::filledCellsBySides), which then split within their columns:
     // in guaranteed mode it takes them too (wing.brep at relative 1e-3: 734 triangles instead
@@ -1752,7 +1752,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // costs about as much as the first (MAT.brep at relative 1e-3: 0.4 s more), never won on
     // the sample models (MAT.brep: 15,976 triangles and 244 open edges at 1e-3, 446 on the
     // second try; the revolved profile: 5,983 and 55, 133).
-    if (options.mode == ErrorMode::Guaranteed && options.freeEdgesOnSurface &&
+    if (options.mode == ErrorMode::Guaranteed && options.retryLoneFaces &&
         options.freeEdgesTakeSurfaceShare && !options.keepFaceVertices) {
         std::vector<char> failed(model.faces.size(), 0);
         for (const auto& failure : result.failures) failed[failure.face - 1] = 1;

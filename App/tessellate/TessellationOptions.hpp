@@ -26,7 +26,7 @@ struct TessellationOptions {
     // A lone face (every edge and vertex its own, one free edge at least) whose region is its
     // whole frame box is tessellated a second time with its free edges' chords on its surface,
     // and the result with fewer open edges kept (tessellateModel). Off only to measure.
-    bool freeEdgesOnSurface = true;
+    bool retryLoneFaces = true;
     // Bound a full kd-tree cell whose corners make a flat quadrilateral by its distance to the
     // surface (CellErrorBound::planarTwist), not at equal parameters: fewer triangles for the
     // same distance, most on surfaces of revolution. The display keeps the bound at equal

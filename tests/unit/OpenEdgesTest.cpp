@@ -133,7 +133,7 @@ TEST(OpenEdges, ALoneSheetKeepsTheTessellationWithFewerOpenEdges) {
             options.tolerance = relative * model.boundingBoxDiagonal;
             const auto result = tessellateModel(model, options);
             ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-            options.freeEdgesOnSurface = false;
+            options.retryLoneFaces = false;
             const auto once = tessellateModel(model, options);
             const std::size_t ours =
                 openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance);
