@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "tessellate/PolygonTriangulator.hpp"
 
@@ -93,7 +94,7 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateInPlane(
     std::vector<std::vector<IntegerPoint2>> ordered;
     std::vector<std::uint32_t> index;  // concatenation of `ordered` -> concatenation of `rings`
     for (const std::size_t r : order) {
-        ordered.push_back(integerRings[r]);
+        ordered.push_back(std::move(integerRings[r]));
         for (std::uint32_t i = 0; i < rings[r].size(); ++i) index.push_back(firstIndex[r] + i);
     }
     const Triangulation triangulation = triangulatePolygon(ordered);
