@@ -16,7 +16,8 @@ struct TessellationOptions {
     int threads = 0;  // 0: all cores
     // Split a kd-tree cell that the boundary crosses through a boundary point near the middle
     // rather than at the middle, so that the split line cuts no new point into the boundary
-    // there (FaceTessellator). The display's levels keep the plain halving, on which their
+    // there, and a cell across an edge that runs along an iso-line through one of that edge's
+    // points (FaceTessellator). The display's levels keep the plain halving, on which their
     // normal bound near sloppy poles was checked.
     bool splitThroughBoundaryPoints = true;
     // A face with a free edge gives surface share to its chords (ErrorBudget::withFreeEdges):
