@@ -303,7 +303,7 @@ double wholeCellTarget(const ErrorBudget& budget, ErrorMode mode) {
 cInt throughBoundaryPoint(const Paths& region, const Rect& r, int direction, cInt at) {
     const cInt lo = direction == 0 ? r.x0 : r.y0, hi = direction == 0 ? r.x1 : r.y1;
     const cInt otherLo = direction == 0 ? r.y0 : r.x0, otherHi = direction == 0 ? r.y1 : r.x1;
-    const cInt window = (hi - lo) / 4 + 1;
+    const cInt window = splitThroughPointWindow(lo, hi);
     cInt inside = at, insideDistance = window, onSide = at, onSideDistance = window;
     bool onLowSide = false, onHighSide = false;
     for (const Path& path : region)
@@ -671,7 +671,9 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         bool simpleRing = false;  // the region's piece is known to be one simple ring
     };
     std::vector<Node> stack;
-    const IsoRunLines isoRuns(region);
+    // the split through iso-run points below, for the faces that take it
+    const bool throughIsoRuns = choices_.splitThroughBoundaryPoints && choices_.filledCellsBySides;
+    const IsoRunLines isoRuns(throughIsoRuns ? region : Paths{});
     leaves_.push_back({{0, 0, kScale, kScale}});
     stack.push_back({{0, 0, kScale, kScale},
                      false,
@@ -843,6 +845,15 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         } else {
             const CellErrorBound bound = cellErrorBound(
                 piece, mode_, target, trimmedCell, choices_.flatCellsByDistance, pieceFraction);
+            // a trimmed cell's bound for corners on its sides, measured (not the plain sum
+            // interior + boundary that `bound` takes), once for the checks below that need it
+            std::optional<CellErrorBound> sides;
+            auto measuredSides = [&]() -> const CellErrorBound& {
+                if (!sides)
+                    sides =
+                        cellErrorBound(piece, mode_, target, false, choices_.flatCellsByDistance);
+                return *sides;
+            };
             const bool settles = bound.measure(mode_, trimmedCell) <= target;
             if (node.full && decisions.record)
                 decisions.byRect[key] = {settles, bound.splitDirection};
@@ -857,9 +868,8 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                 if (const auto near = nearSideOffsets(*node.region, r, node.simpleRing)) {
                     // the bound for corners on the sides, measured for them (not the trimmed
                     // cell's plain sum)
-                    const CellErrorBound sides =
-                        cellErrorBound(piece, mode_, target, false, choices_.flatCellsByDistance);
-                    if (sides.nearSides(parameterSpeed(piece), (*near)[0], (*near)[1]) <= target) {
+                    if (measuredSides().nearSides(parameterSpeed(piece), (*near)[0], (*near)[1]) <=
+                        target) {
                         leaves_[node.index].leaf = true;
                         continue;
                     }
@@ -869,8 +879,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             if (trimmedCell && !sidesWouldDo && mode_ == ErrorMode::Guaranteed &&
                 choices_.filledCellsBySides && choices_.splitThroughBoundaryPoints &&
                 bound.untrimmed() <= kMeasuredSidesWithin * target &&
-                cellErrorBound(piece, mode_, target, false, choices_.flatCellsByDistance)
-                        .untrimmed() <= target) {
+                measuredSides().untrimmed() <= target) {
                 sidesWouldDo = true;
                 widestBand = bound.measure(mode_, trimmedCell) > kFarAboveTarget * target
                                  ? kWidestBand
@@ -938,9 +947,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // hammer.iges 9,564 -> 9,408). Not on a face with a free edge, which bounds its cells
         // at the boundary as trimmed ones (filledCellsBySides): off-centre cells cost it more
         // than the points saved (wing.brep at 1e-4: 6,529 -> 7,536 triangles).
-        if (where == at && !even && choices_.splitThroughBoundaryPoints &&
-            choices_.filledCellsBySides)
-            where = isoRuns.nearest(direction, lo, hi, at);
+        if (where == at && !even && throughIsoRuns) where = isoRuns.nearest(direction, lo, hi, at);
         split(direction, where);
     }
 }

@@ -24,8 +24,7 @@ IsoRunLines::IsoRunLines(const ClipperLib::Paths& region) {
 
 cInt IsoRunLines::nearest(int axis, cInt lo, cInt hi, cInt at) const {
     const std::vector<cInt>& lines = lines_[axis];
-    const cInt window = (hi - lo) / 4 + 1;
-    cInt best = at, bestDistance = window;
+    cInt best = at, bestDistance = splitThroughPointWindow(lo, hi);
     auto consider = [&](std::vector<cInt>::const_iterator line) {
         if (line == lines.end() || *line <= lo || *line >= hi) return;
         if (const cInt distance = std::abs(*line - at); distance < bestDistance)

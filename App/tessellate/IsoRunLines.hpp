@@ -13,13 +13,19 @@ namespace nurbslod {
 // kd-tree lines, whose parameters never meet the torus's halvings. A line across the run
 // through one of its points adds no point to it; a line anywhere else cuts the run's segment
 // at a new point, which both faces of the edge then carry.
+// How far from the middle `at` of a cell [lo, hi] a split may move to go through a point it
+// adds nothing at: a quarter of the cell (FaceTessellator's throughBoundaryPoint and
+// IsoRunLines::nearest).
+inline ClipperLib::cInt splitThroughPointWindow(ClipperLib::cInt lo, ClipperLib::cInt hi) {
+    return (hi - lo) / 4 + 1;
+}
+
 class IsoRunLines {
 public:
     explicit IsoRunLines(const ClipperLib::Paths& region);
 
     // The line across `axis` (0: x = const, 1: y = const) through a run point strictly inside
-    // (lo, hi) nearest `at`, within a quarter of the cell (as FaceTessellator's
-    // throughBoundaryPoint looks for boundary points); `at` where there is none.
+    // (lo, hi) nearest `at`, within splitThroughPointWindow; `at` where there is none.
     ClipperLib::cInt nearest(int axis, ClipperLib::cInt lo, ClipperLib::cInt hi,
                              ClipperLib::cInt at) const;
 

@@ -547,9 +547,9 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     }
     // The chords' share of an edge: the smallest of its faces' trimming shares (each face's
     // sum must hold), leaving out the faces whose cells bound all their chords and every use
-    // whose cells bound this edge's chords: its curve use, and on an exact edge any face it is
-    // straight in (chordOnSurface), whose chords in (u, v) the surface maps onto the curve as
-    // the curve use's do, with every point on the curve (ErrorBudget). Such a face spends its
+    // whose cells bound this edge's chords (chordOnSurface): its curve use, and on an exact edge
+    // any face it is straight in, whose chords in (u, v) the surface maps onto the curve as the
+    // curve use's do, with every point on the curve (ErrorBudget). Such a face spends its
     // trimming share on its other curves only: a cylinder between torus fillets whose circles
     // are exact takes the chords the cells need, not the fillets' trimming share
     // (bug33398.step at relative 1e-4: 32,070 -> 31,562 triangles; one circle of its half
@@ -562,8 +562,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
         // no face to limit it: the most any face's curves can take with the fixed share gap
         double trimming = std::numeric_limits<double>::infinity();
         for (size_t k = 0; k < uses[e].size(); ++k)
-            if ((!withCurveUse || static_cast<int>(k) != curveUse[e]) &&
-                !chordsOnSurface[uses[e][k].face] &&
+            if (!chordsOnSurface[uses[e][k].face] &&
                 !(withCurveUse &&
                   chordOnSurface(uses[e][k].face, uses[e][k].loop, uses[e][k].curve)))
                 trimming = std::min(trimming, faceBudgets[uses[e][k].face].trimming());
