@@ -14,6 +14,7 @@
 #include <Geom2d_Ellipse.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <GeomAdaptor_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -225,9 +226,16 @@ SurfaceConversion conversionOf(const TopoDS_Face& face) {
     return SurfaceConversion::NurbsConvert;
 }
 
+// A loop curve's edge and the file's pcurve of it on the face, as read once: for a plane
+// without pcurves BRep_Tool::CurveOnSurface projects the 3D curve anew at every call.
+struct EdgeOnFace {
+    TopoDS_Edge edge;
+    Handle(Geom2d_Curve) pcurve;
+};
+
 TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                     const TopTools_DataMapOfShapeInteger& edgeIndex,
-                    std::vector<TopoDS_Edge>& curveEdges) {
+                    std::vector<EdgeOnFace>& edgesOnFace) {
     TrimLoop loop;
     std::vector<TopoDS_Edge> ordered;
     for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
@@ -255,7 +263,7 @@ TrimLoop importLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
         curve.seam = BRep_Tool::IsClosed(edge, face);
         curve.degenerated = BRep_Tool::Degenerated(edge);
         loop.curves.push_back(std::move(curve));
-        curveEdges.push_back(edge);
+        edgesOnFace.push_back({edge, pcurve});
     }
     return loop;
 }
@@ -271,8 +279,9 @@ struct ConicEdge {
     Handle(Geom_BSplineCurve) rational;
     double first = 0, last = 0;
 
-    double theta(double s) const {
-        const gp_Pnt p = rational->Value(s);
+    double theta(double s) const { return thetaAt(s, rational->Value(s)); }
+    // theta(s) where the edge's point p at s is known already
+    double thetaAt(double s, const gp_Pnt& p) const {
         double angle = conic->IsKind(STANDARD_TYPE(Geom_Circle))
                            ? ElCLib::Parameter(Handle(Geom_Circle)::DownCast(conic)->Circ(), p)
                            : ElCLib::Parameter(Handle(Geom_Ellipse)::DownCast(conic)->Elips(), p);
@@ -342,10 +351,14 @@ Handle(Geom2d_BSplineCurve)
         } catch (const Standard_Failure&) {
         }
     }
-    auto guess = [&](double s) { return pcurve->Value(edge.theta(s)); };
+    // the rational form through its span cache: each projection asks for its point twice (the
+    // point, and the angle of the guess), and de Boor's algorithm looks for the span among
+    // all the knots every time
+    const GeomAdaptor_Curve rational(edge.rational);
+    auto guess = [&](double s) { return pcurve->Value(edge.thetaAt(s, rational.Value(s))); };
     Handle(Geom2d_BSplineCurve) remade =
-        pcurveFromCurve([&](double s) { return edge.rational->Value(s); }, surface, guess,
-                        edge.first, edge.last, accuracy);
+        pcurveFromCurve([&](double s) { return rational.Value(s); }, surface, guess, edge.first,
+                        edge.last, accuracy);
     if (remade.IsNull() && !newParameter)
         // the projection failed, the file's pcurve is still right: the same (u, v) at theta(s)
         remade = pcurveFromCurve(
@@ -388,15 +401,15 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     result.faceIndex = index;
     result.reversed = face.Orientation() == TopAbs_REVERSED;
     const TopoDS_Wire outer = BRepTools::OuterWire(face);
-    std::vector<std::vector<TopoDS_Edge>> curveEdges;
+    std::vector<std::vector<EdgeOnFace>> edgesOnFace;
     for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) {
         const TopoDS_Wire wire = TopoDS::Wire(it.Current());
-        std::vector<TopoDS_Edge> loopEdges;
+        std::vector<EdgeOnFace> loopEdges;
         TrimLoop loop = importLoop(wire, face, edgeIndex, loopEdges);
         loop.outer = wire.IsSame(outer);
         if (!loop.curves.empty()) {
             result.loops.push_back(std::move(loop));
-            curveEdges.push_back(std::move(loopEdges));
+            edgesOnFace.push_back(std::move(loopEdges));
         }
     }
     if (result.loops.empty()) throw Standard_Failure("the face has no trimming loop");
@@ -411,10 +424,9 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
         for (size_t c = 0; c < result.loops[l].curves.size(); ++c) {
             TrimCurve& curve = result.loops[l].curves[c];
             if (curve.degenerated) continue;  // a point in 3D: its (u, v) line stays
-            double first = 0, last = 0;
-            const Handle(Geom2d_Curve) pcurve =
-                BRep_Tool::CurveOnSurface(curveEdges[l][c], face, first, last);
-            if (const auto conic = conicEdgeOf(curveEdges[l][c])) {
+            const TopoDS_Edge& edge = edgesOnFace[l][c].edge;
+            const Handle(Geom2d_Curve)& pcurve = edgesOnFace[l][c].pcurve;
+            if (const auto conic = conicEdgeOf(edge)) {
                 const Handle(Geom2d_BSplineCurve) remade =
                     conicEdgePcurve(*conic, unwrapped, pcurve, newParameter, pcurveAccuracy);
                 if (remade.IsNull())
@@ -427,13 +439,12 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
                 continue;
             }
             if (!newParameter && unwrapped == surface &&
-                pcurveDeviation(curveEdges[l][c], surface, pcurve, curve.first, curve.last) <=
-                    pcurveAccuracy)
+                pcurveDeviation(edge, surface, pcurve, curve.first, curve.last) <= pcurveAccuracy)
                 continue;
             // the file's pcurve is the guess: GeomConvert's parameter stays within a fraction of
             // a span of the analytic one, and it keeps the side of a seam
             const Handle(Geom2d_BSplineCurve) remade = pcurveFromEdgeCurve(
-                curveEdges[l][c], unwrapped, pcurve, curve.first, curve.last, pcurveAccuracy);
+                edge, unwrapped, pcurve, curve.first, curve.last, pcurveAccuracy);
             if (!remade.IsNull()) {
                 if (newParameter) keepIsoparametric(curve.pcurve, *remade);
                 curve.pcurve = toCurve(remade);
@@ -445,7 +456,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
     for (size_t l = 0; l < result.loops.size(); ++l)
         for (size_t c = 0; c < result.loops[l].curves.size(); ++c)
             straightenNearIsoparametric(result.surface, result.loops[l].curves[c],
-                                        BRep_Tool::Tolerance(curveEdges[l][c]));
+                                        BRep_Tool::Tolerance(edgesOnFace[l][c].edge));
     surfaceOut = unwrapped;
     return result;
 }

@@ -183,7 +183,12 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     const SurfaceSpanCache spans(surface);
     bool slid = false;
     // each round's midpoints are the next round's samples: projected once
-    std::unordered_map<double, gp_Pnt2d> projections;
+    struct Projection {
+        gp_Pnt2d uv;
+        gp_Pnt point;
+        bool evaluated = false;
+    };
+    std::unordered_map<double, Projection> projections;
     auto project = [&](double t) {
         const gp_Pnt2d start = guess(t);
         const gp_Pnt point = curve(t);
@@ -201,8 +206,18 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
     };
     auto sampleAt = [&](double t) {
         const auto known = projections.find(t);
-        if (known != projections.end()) return known->second;
-        return projections.emplace(t, project(t)).first->second;
+        if (known != projections.end()) return known->second.uv;
+        return projections.emplace(t, Projection{project(t), gp_Pnt(), false}).first->second.uv;
+    };
+    // the surface point of a projection, evaluated once: a midpoint whose interval is not
+    // refined is compared again in the next round
+    auto surfacePointAt = [&](double t) {
+        Projection& known = projections.find(t)->second;
+        if (!known.evaluated) {
+            known.point = spans.value(known.uv.X(), known.uv.Y());
+            known.evaluated = true;
+        }
+        return known.point;
     };
     // Samples are added where the interpolant misses, not everywhere: the pcurve of a circle's
     // or a helix's edge on a surface's rational form has a kink in its speed wherever it
@@ -246,9 +261,9 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         const Geom2dAdaptor_Curve fittedCurve(result);  // evaluates through its span cache
         for (int k = 0; k + 1 < count; ++k) {
             const double t = 0.5 * (parameters[k] + parameters[k + 1]);
-            const gp_Pnt2d fitted = fittedCurve.Value(t), projected = sampleAt(t);
-            const double miss = spans.value(fitted.X(), fitted.Y())
-                                    .Distance(spans.value(projected.X(), projected.Y()));
+            sampleAt(t);
+            const gp_Pnt2d fitted = fittedCurve.Value(t);
+            const double miss = spans.value(fitted.X(), fitted.Y()).Distance(surfacePointAt(t));
             worst = std::max(worst, miss);
             if (miss > 0.01 * accuracy && t > parameters[k] && t < parameters[k + 1])
                 refined.push_back(t);

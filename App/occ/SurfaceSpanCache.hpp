@@ -2,6 +2,7 @@
 
 #include <BSplSLib_Cache.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <array>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -16,6 +17,10 @@ namespace nurbslod::occ {
 // the span on one side is taken: both give the same point, and the same derivatives where the
 // surface is C1 there; a projection's Newton steps need only a tangent plane, which a C0 knot
 // line (a kink) has on either side.
+//
+// A few spans are held at once, the one used longest ago rebuilt: a pcurve's projections and
+// the checks of its interpolant between them go back and forth between neighbouring spans
+// (rebuilding one cache was an eighth of hammer.iges's import).
 class SurfaceSpanCache {
 public:
     explicit SurfaceSpanCache(const Handle(Geom_BSplineSurface) & surface);
@@ -23,11 +28,17 @@ public:
     void firstDerivatives(double u, double v, gp_Pnt& point, gp_Vec& du, gp_Vec& dv) const;
 
 private:
-    void holdSpanOf(double u, double v) const;
+    static constexpr int kHeldSpans = 4;
+    const BSplSLib_Cache& spanOf(double u, double v) const;
 
     Handle(Geom_BSplineSurface) surface_;
-    Handle(BSplSLib_Cache) cache_;
-    mutable bool built_ = false;
+    struct HeldSpan {
+        Handle(BSplSLib_Cache) cache;
+        bool built = false;
+        long lastUse = 0;
+    };
+    mutable std::array<HeldSpan, kHeldSpans> spans_;
+    mutable long uses_ = 0;
 };
 
 }  // namespace nurbslod::occ

@@ -1,4 +1,4 @@
-// A B-spline surface evaluated through the cache of its last span (SurfaceSpanCache) agrees
+// A B-spline surface evaluated through the caches of its last spans (SurfaceSpanCache) agrees
 // with Geom_BSplineSurface's own D1 everywhere, on knot lines and the surface's border too,
 // where GeomAdaptor_Surface would redo de Boor's algorithm.
 #include <gtest/gtest.h>
@@ -39,6 +39,35 @@ TEST(SurfaceSpanCache, AgreesWithTheSurfaceOnAndBetweenKnotLines) {
         EXPECT_LT(point.Distance(cache.value(s, t)), 1e-12) << s << " " << t;
         EXPECT_LT((du - expectedU).Magnitude(), 1e-10 * expectedU.Magnitude()) << s << " " << t;
         EXPECT_LT((dv - expectedV).Magnitude(), 1e-10 * expectedV.Magnitude()) << s << " " << t;
+    }
+}
+
+TEST(SurfaceSpanCache, HeldSpansGiveWhatAFreshCacheGives) {
+    // back and forth over more spans than are held at once, each answer bit for bit the one
+    // of a cache made for that point alone: a held span is never used for a point outside it
+    const Handle(Geom_Surface) torus = new Geom_RectangularTrimmedSurface(
+        new Geom_ToroidalSurface(gp_Ax3(gp::XOY()), 10.0, 3.0), 0.0, 2 * M_PI, 0.0, 2 * M_PI);
+    const Handle(Geom_BSplineSurface) surface = GeomConvert::SurfaceToBSplineSurface(torus);
+    const occ::SurfaceSpanCache cache(surface);
+    std::mt19937 random(3);
+    std::uniform_int_distribution<int> span(1, surface->NbUKnots() - 1);
+    std::uniform_real_distribution<double> within(0.0, 1.0);
+    for (int k = 0; k < 400; ++k) {
+        const int i = span(random), j = span(random);
+        const double u =
+            surface->UKnot(i) + within(random) * (surface->UKnot(i + 1) - surface->UKnot(i));
+        const double v =
+            surface->VKnot(j) + within(random) * (surface->VKnot(j + 1) - surface->VKnot(j));
+        gp_Pnt point, fresh;
+        gp_Vec du, dv, freshU, freshV;
+        cache.firstDerivatives(u, v, point, du, dv);
+        occ::SurfaceSpanCache(surface).firstDerivatives(u, v, fresh, freshU, freshV);
+        EXPECT_EQ(point.X(), fresh.X());
+        EXPECT_EQ(point.Y(), fresh.Y());
+        EXPECT_EQ(point.Z(), fresh.Z());
+        EXPECT_EQ(du.X(), freshU.X());
+        EXPECT_EQ(dv.Z(), freshV.Z());
+        EXPECT_EQ(cache.value(u, v).Y(), occ::SurfaceSpanCache(surface).value(u, v).Y());
     }
 }
 
