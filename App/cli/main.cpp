@@ -203,7 +203,9 @@ int runTessellate(const TessellateArguments& arguments) {
                        ": the output must end in .obj, .ply, .stl or .off");
 
     const TopoDS_Shape shape = readModel(arguments.model);
-    const Model model = occ::importModel(shape);
+    const auto read = std::chrono::steady_clock::now();
+    const Model model = occ::importModel(shape, arguments.threads);
+    const auto imported = std::chrono::steady_clock::now();
 
     TessellationOptions options;
     options.tolerance =
@@ -227,14 +229,18 @@ int runTessellate(const TessellateArguments& arguments) {
 
     const double totalSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::string json = "{\"faces\":" + std::to_string(model.faces.size()) +
-                       ",\"triangles\":" + std::to_string(result.mesh.triangles.size()) +
-                       ",\"vertices\":" + std::to_string(result.mesh.positions.size()) +
-                       ",\"seconds\":" + jsonNumber(result.seconds) +
-                       ",\"total_seconds\":" + jsonNumber(totalSeconds) +
-                       ",\"tolerance\":" + jsonNumber(options.tolerance) +
-                       ",\"mode\":" + jsonString(arguments.mode) +
-                       ",\"output\":" + jsonString(arguments.output) + ",\"faces_failed\":[";
+    std::string json =
+        "{\"faces\":" + std::to_string(model.faces.size()) +
+        ",\"triangles\":" + std::to_string(result.mesh.triangles.size()) +
+        ",\"vertices\":" + std::to_string(result.mesh.positions.size()) +
+        ",\"seconds\":" + jsonNumber(result.seconds) +
+        ",\"total_seconds\":" + jsonNumber(totalSeconds) +
+        ",\"read_seconds\":" + jsonNumber(std::chrono::duration<double>(read - start).count()) +
+        ",\"import_seconds\":" +
+        jsonNumber(std::chrono::duration<double>(imported - read).count()) +
+        ",\"tolerance\":" + jsonNumber(options.tolerance) +
+        ",\"mode\":" + jsonString(arguments.mode) + ",\"output\":" + jsonString(arguments.output) +
+        ",\"faces_failed\":[";
     for (std::size_t i = 0; i < result.failures.size(); ++i)
         json += std::string(i ? "," : "") + "{\"face\":" + std::to_string(result.failures[i].face) +
                 ",\"reason\":" + jsonString(result.failures[i].reason) + "}";

@@ -1,5 +1,8 @@
 #include "occ/ModelImporter.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -463,7 +466,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
 
 }  // namespace
 
-Model importModel(const TopoDS_Shape& original) {
+Model importModel(const TopoDS_Shape& original, int threads) {
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
@@ -506,25 +509,38 @@ Model importModel(const TopoDS_Shape& original) {
         face.error = std::string("import failed: ") + failure.GetMessageString();
         return face;
     };
-    std::vector<int> toConvert;  // 0-based face slots left for NurbsConvert
-    for (int k = 1; k <= originalFaces.Extent(); ++k) {
-        const SurfaceConversion conversion = conversionOf(sewn.faces[k - 1]);
+    // Each face on its own: it reads the shared edges and writes only its own slot, so the
+    // faces may go in parallel (oneTBB) where more than one thread is allowed.
+    std::vector<char> convertLater(model.faces.size(), 0);
+    auto importSlot = [&](int slot) {
+        const int k = slot + 1;
+        const SurfaceConversion conversion = conversionOf(sewn.faces[slot]);
         if (conversion == SurfaceConversion::NurbsConvert) {
-            toConvert.push_back(k - 1);
-            continue;
+            convertLater[slot] = 1;
+            return;
         }
         try {
-            model.faces[k - 1] =
-                importFace(sewn.faces[k - 1], k, edgeIndex, pcurveAccuracy,
-                           conversion == SurfaceConversion::NewParameter, surfaces[k - 1]);
+            model.faces[slot] =
+                importFace(sewn.faces[slot], k, edgeIndex, pcurveAccuracy,
+                           conversion == SurfaceConversion::NewParameter, surfaces[slot]);
         } catch (const Standard_Failure& failure) {
             if (conversion == SurfaceConversion::NewParameter) {
-                toConvert.push_back(k - 1);
-                continue;
+                convertLater[slot] = 1;
+                return;
             }
-            model.faces[k - 1] = failedFace(k, failure);
+            model.faces[slot] = failedFace(k, failure);
         }
+    };
+    const int faceCount = static_cast<int>(model.faces.size());
+    if (threads == 1) {
+        for (int slot = 0; slot < faceCount; ++slot) importSlot(slot);
+    } else {
+        tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+        arena.execute([&] { tbb::parallel_for(0, faceCount, importSlot); });
     }
+    std::vector<int> toConvert;  // 0-based face slots left for NurbsConvert
+    for (int slot = 0; slot < faceCount; ++slot)
+        if (convertLater[slot]) toConvert.push_back(slot);
 
     std::optional<BRepBuilderAPI_NurbsConvert> converter;
     if (!toConvert.empty()) {

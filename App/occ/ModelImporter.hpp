@@ -14,8 +14,9 @@ namespace nurbslod::occ {
 // carried onto the new parameter (circle edges in their rational form on every face), offset
 // surfaces through BRepBuilderAPI_NurbsConvert, the face's location applied to the control
 // points, loops from the edges' pcurves. A face that cannot be converted keeps its slot with
-// `error` set.
-Model importModel(const TopoDS_Shape& shape);
+// `error` set. threads: how many threads convert the faces (1: the calling thread alone, 0: all
+// cores); the model is the same for any count.
+Model importModel(const TopoDS_Shape& shape, int threads = 1);
 
 // The NURBS form of a face's surface as the importer sees it (analytic surfaces converted,
 // periodic knots clamped, the face's location applied), and its copy in our own type: the

@@ -98,11 +98,23 @@ int threadCount(int threads) {
     return threads;
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Seconds spent reading the shape and turning its faces into trimmed NURBS (the summary's
+// read_seconds and import_seconds).
+struct SourceSeconds {
+    double read = 0, import = 0;
+};
+
 // Runs without the GIL: reading and importing are pure C++.
-Model importSource(const ShapeSource& source) {
+Model importSource(const ShapeSource& source, int threads, SourceSeconds& seconds) {
+    const Clock::time_point start = Clock::now();
     const TopoDS_Shape shape =
         source.isPath ? occ::readShape(source.text) : occ::shapeFromBrepString(source.text);
-    Model model = occ::importModel(shape);
+    const Clock::time_point read = Clock::now();
+    Model model = occ::importModel(shape, threads);
+    seconds.read = std::chrono::duration<double>(read - start).count();
+    seconds.import = std::chrono::duration<double>(Clock::now() - read).count();
     if (model.faces.empty()) {
         throw std::invalid_argument("NurbsLOD: the shape has no faces to tessellate");
     }
@@ -119,19 +131,18 @@ double absoluteTolerance(const Model& model, const ToleranceRequest& request) {
 
 // Runs without the GIL: reading, importing and tessellating are pure C++.
 TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
-                                    TessellationOptions options) {
-    const Model model = importSource(source);
+                                    TessellationOptions options, SourceSeconds& seconds) {
+    const Model model = importSource(source, options.threads, seconds);
     options.tolerance = absoluteTolerance(model, request);
     return tessellateModel(model, options);
 }
-
-using Clock = std::chrono::steady_clock;
 
 struct Call {
     Clock::time_point start = Clock::now();  // for the summary's total_seconds
     ShapeSource source;
     ToleranceRequest tolerance;
     TessellationOptions options;
+    mutable SourceSeconds sourceSeconds;  // filled in by run()
 };
 
 // Checks every argument before the (possibly long) work starts.
@@ -147,11 +158,12 @@ Call parseCall(const py::object& shape, std::optional<double> tolerance,
 
 TessellationResult run(const Call& call) {
     py::gil_scoped_release release;
-    return tessellateSource(call.source, call.tolerance, call.options);
+    return tessellateSource(call.source, call.tolerance, call.options, call.sourceSeconds);
 }
 
 // The summary has the keys of the command line's JSON summary, so scripts can use either.
-// total_seconds counts everything from the call on; seconds only the tessellation.
+// total_seconds counts everything from the call on; seconds only the tessellation; read_seconds
+// and import_seconds the reading of the shape and its faces' conversion into trimmed NURBS.
 py::dict summaryDict(const TessellationResult& result, const Call& call,
                      const std::optional<std::string>& output = std::nullopt) {
     py::list failures;
@@ -167,6 +179,8 @@ py::dict summaryDict(const TessellationResult& result, const Call& call,
     summary["vertices"] = result.mesh.positions.size();
     summary["seconds"] = result.seconds;
     summary["total_seconds"] = std::chrono::duration<double>(Clock::now() - call.start).count();
+    summary["read_seconds"] = call.sourceSeconds.read;
+    summary["import_seconds"] = call.sourceSeconds.import;
     summary["tolerance"] = result.tolerance;
     summary["mode"] = modeName(call.options.mode);
     if (output) {
@@ -282,7 +296,7 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
     AnalysisMesh analysis;
     {
         py::gil_scoped_release release;
-        const Model model = importSource(call.source);
+        const Model model = importSource(call.source, call.options.threads, call.sourceSeconds);
         TessellationOptions options = call.options;
         options.tolerance = absoluteTolerance(model, call.tolerance);
         // The overlays interpolate per-vertex normals and curvatures across each triangle, at

@@ -72,6 +72,12 @@ class ArrayContract(unittest.TestCase):
         self.assertEqual(summary["faces_failed"], [])
         self.assertGreaterEqual(summary["seconds"], 0.0)
         self.assertGreaterEqual(summary["total_seconds"], summary["seconds"])
+        # reading and importing come before the tessellation, all within the whole call
+        self.assertGreater(summary["read_seconds"], 0.0)
+        self.assertGreater(summary["import_seconds"], 0.0)
+        self.assertLessEqual(
+            summary["read_seconds"] + summary["import_seconds"] + summary["seconds"],
+            summary["total_seconds"])
         if tolerance is not None:
             self.assertAlmostEqual(summary["tolerance"], tolerance)
 

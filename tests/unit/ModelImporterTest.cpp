@@ -133,5 +133,47 @@ TEST(ModelImporter, CirclesStayExactAndStraight) {
     EXPECT_GE(straightCircles, 8);
 }
 
+// The faces may be converted in parallel: each writes only its own slot, so the model comes
+// out the same, bit for bit, whatever the thread count. Four copies of the parts give each
+// thread faces of every kind.
+TEST(ModelImporter, TheModelIsTheSameWithAnyThreadCount) {
+    TopoDS_Compound parts;
+    BRep_Builder builder;
+    builder.MakeCompound(parts);
+    for (int k = 0; k < 4; ++k) {
+        TopoDS_Shape copy = analyticParts();
+        gp_Trsf shift;
+        shift.SetTranslation(gp_Vec(100.0 * k, 0, 0));
+        copy.Move(TopLoc_Location(shift));
+        builder.Add(parts, copy);
+    }
+    const Model one = occ::importModel(parts, 1);
+    ASSERT_GE(one.faces.size(), 40u);
+    for (const int threads : {2, 0}) {
+        const Model many = occ::importModel(parts, threads);
+        ASSERT_EQ(many.faces.size(), one.faces.size());
+        ASSERT_EQ(many.edges.size(), one.edges.size());
+        for (size_t f = 0; f < one.faces.size(); ++f) {
+            const TrimmedSurface &a = one.faces[f], &b = many.faces[f];
+            EXPECT_EQ(a.faceIndex, b.faceIndex);
+            EXPECT_EQ(a.error, b.error);
+            EXPECT_EQ(a.reversed, b.reversed);
+            EXPECT_EQ(a.surface.poles(), b.surface.poles()) << "face " << f + 1;
+            ASSERT_EQ(a.loops.size(), b.loops.size());
+            for (size_t l = 0; l < a.loops.size(); ++l) {
+                ASSERT_EQ(a.loops[l].curves.size(), b.loops[l].curves.size());
+                for (size_t c = 0; c < a.loops[l].curves.size(); ++c) {
+                    const TrimCurve &x = a.loops[l].curves[c], &y = b.loops[l].curves[c];
+                    EXPECT_EQ(x.edge, y.edge);
+                    EXPECT_EQ(x.first, y.first);
+                    EXPECT_EQ(x.last, y.last);
+                    EXPECT_EQ(x.pcurve.poles(), y.pcurve.poles())
+                        << "face " << f + 1 << " loop " << l << " curve " << c;
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace nurbslod
