@@ -1,5 +1,8 @@
 #include "occ/FreeEdgePairs.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
@@ -150,7 +153,8 @@ std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolera
 // The joined face's curve follows the points the kept face's mesh has on the edge; each
 // projection starts from the joined face's own pcurve at the nearest parameter.
 void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pairs,
-                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double accuracy) {
+                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double accuracy,
+                       int threads) {
     if (pairs.empty()) return;
     struct CurveUse {
         int face = -1, loop = -1, curve = -1;
@@ -181,32 +185,46 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
         if (a != b) root[b] = a;
     };
     auto toPnt = [](const Point3& p) { return gp_Pnt(p.x(), p.y(), p.z()); };
-    for (const auto& [kept, joined] : pairs) {
+    // Each pair's new curve is made from the kept curve and the joined face's own: no pair
+    // changes what another reads (the pairs' edges are distinct, and only joined curves
+    // change), so they are made first, in parallel where threads allow, and put in after.
+    struct Joined {
+        bool made = false;
+        TrimCurve curve;       // the joined face's curve along the kept edge
+        bool along = true;     // the copies run the same way
+        double tolerance = 0;  // the kept edge's, covering the copies' gap
+    };
+    std::vector<Joined> joinedCurves(pairs.size());
+    auto joinPair = [&](std::size_t i) {
+        const auto [kept, joined] = pairs[i];
         if (kept < 0 || joined < 0 || kept >= edgeCount || joined >= edgeCount ||
             useCount[kept] != 1 || useCount[joined] != 1)
-            continue;
+            return;
         const CurveUse a = useOf[kept], b = useOf[joined];
-        if (a.face == b.face || surfaces[b.face].IsNull()) continue;
+        if (a.face == b.face || surfaces[b.face].IsNull()) return;
         const TrimmedSurface& faceA = model.faces[a.face];
-        TrimmedSurface& faceB = model.faces[b.face];
+        const TrimmedSurface& faceB = model.faces[b.face];
         const TrimCurve& curveA = faceA.loops[a.loop].curves[a.curve];
-        TrimCurve& curveB = faceB.loops[b.loop].curves[b.curve];
-        if (curveA.degenerated || curveB.degenerated || curveA.seam || curveB.seam) continue;
+        const TrimCurve& ownCurveB = faceB.loops[b.loop].curves[b.curve];
+        if (curveA.degenerated || ownCurveB.degenerated || curveA.seam || ownCurveB.seam) return;
         const std::function<Point3(double)> onA = [&](double t) {
             const Point2 uv = curveA.pcurve.point(t);
             return faceA.surface.point(uv.x(), uv.y());
         };
-        const BSplineCurve2d ownB = curveB.pcurve;
+        const BSplineCurve2d& ownB = ownCurveB.pcurve;
         const std::function<Point3(double)> onB = [&](double s) {
             const Point2 uv = ownB.point(s);
             return faceB.surface.point(uv.x(), uv.y());
         };
+        const double copyTolerance =
+            std::max(model.edges[kept].tolerance, model.edges[joined].tolerance);
         // b's parameter nearest to a's points, at evenly spaced parameters of a
         constexpr int kSamples = 32;
         std::vector<double> parametersB, nearestB;
         std::vector<Point3> polygonB;
         for (int k = 0; k <= 2 * kSamples; ++k) {
-            parametersB.push_back(curveB.first + (curveB.last - curveB.first) * k / (2 * kSamples));
+            parametersB.push_back(ownCurveB.first +
+                                  (ownCurveB.last - ownCurveB.first) * k / (2 * kSamples));
             polygonB.push_back(onB(parametersB.back()));
         }
         double gap = 0;
@@ -217,6 +235,18 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
             nearestB.push_back(nearestParameter(
                 parametersB, sampled, [&](double s) { return (onB(s) - p).squaredNorm(); }));
             gap = std::max(gap, (onB(nearestB.back()) - p).norm());
+        }
+        // the copies run the same way where b's parameter grows with a's (read between the
+        // ends: a closed edge's ends are one point, either end of b)
+        const bool along = nearestB[3 * kSamples / 4] > nearestB[kSamples / 4];
+        // A closed copy (a circle) has both its ends nearest to a's ends: the nearest found
+        // may be the wrong one, and a guess running from b's last parameter back to its first
+        // over a's first step slides the projection around the whole curve (the pair then
+        // stayed open: a plate's hole and a cylinder written as loose faces).
+        if (polygonB.front() == polygonB.back() ||
+            (polygonB.front() - polygonB.back()).norm() <= std::max(copyTolerance, gap)) {
+            nearestB.front() = along ? ownCurveB.first : ownCurveB.last;
+            nearestB.back() = along ? ownCurveB.last : ownCurveB.first;
         }
         const auto guess = [&](double t) {
             const double x =
@@ -231,28 +261,44 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
             remade = pcurveFromCurve([&](double t) { return toPnt(onA(t)); }, surfaces[b.face],
                                      guess, curveA.first, curveA.last, accuracy);
         } catch (const Standard_Failure&) {
-            continue;
+            return;
         }
-        if (remade.IsNull()) continue;
+        if (remade.IsNull()) return;
         keepIsoparametric(ownB, *remade);
-        // the copies run the same way where b's parameter grows with a's (read between the
-        // ends: a closed edge's ends are one point, either end of b)
-        const bool along = nearestB[3 * kSamples / 4] > nearestB[kSamples / 4];
-        curveB.pcurve = toCurve(remade);
-        curveB.beforeStraightening.reset();  // a curve of the face's old edge parameter
-        curveB.first = curveA.first;
-        curveB.last = curveA.last;
-        curveB.edge = kept;
-        if (!along) curveB.reversed = !curveB.reversed;
-        ModelEdge& edge = model.edges[kept];
-        const ModelEdge& copy = model.edges[joined];
-        edge.tolerance = std::max({edge.tolerance, copy.tolerance, gap});
+        Joined& result = joinedCurves[i];
+        result.along = along;
+        result.curve = ownCurveB;
+        result.curve.pcurve = toCurve(remade);
+        result.curve.beforeStraightening.reset();  // a curve of the face's old edge parameter
+        result.curve.first = curveA.first;
+        result.curve.last = curveA.last;
+        result.curve.edge = kept;
+        if (!result.along) result.curve.reversed = !result.curve.reversed;
+        result.tolerance =
+            std::max({model.edges[kept].tolerance, model.edges[joined].tolerance, gap});
         // the remade curve follows the kept one's points: along an isoparametric line of its
         // own surface to within rounding, or as near as the copies are
-        straightenNearIsoparametric(faceB.surface, curveB, edge.tolerance);
+        straightenNearIsoparametric(faceB.surface, result.curve, result.tolerance);
+        result.made = true;
+    };
+    if (threads == 1) {
+        for (std::size_t i = 0; i < pairs.size(); ++i) joinPair(i);
+    } else {
+        tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+        arena.execute([&] { tbb::parallel_for(std::size_t(0), pairs.size(), joinPair); });
+    }
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const Joined& result = joinedCurves[i];
+        if (!result.made) continue;
+        const auto [kept, joined] = pairs[i];
+        const CurveUse b = useOf[joined];
+        model.faces[b.face].loops[b.loop].curves[b.curve] = result.curve;
+        ModelEdge& edge = model.edges[kept];
+        const ModelEdge& copy = model.edges[joined];
+        edge.tolerance = result.tolerance;
         // the copy's ends onto the kept edge's nearer ones
-        unite(edge.firstVertex, along ? copy.firstVertex : copy.lastVertex);
-        unite(edge.lastVertex, along ? copy.lastVertex : copy.firstVertex);
+        unite(edge.firstVertex, result.along ? copy.firstVertex : copy.lastVertex);
+        unite(edge.lastVertex, result.along ? copy.lastVertex : copy.firstVertex);
     }
     // one vertex for each set of copies, its tolerance reaching every copy's
     std::vector<double> tolerance(model.vertices.size());

@@ -32,8 +32,9 @@ std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolera
 // form of the face's B-spline surface) from the kept face's points within `accuracy`. Its loop
 // then runs along the kept edge, the kept edge's tolerance covers the copies' gap, and the
 // copies' vertices become one. A pair whose projection fails stays two edges (open in the mesh,
-// every face still meshed).
+// every face still meshed). threads: as importModel's; the model is the same for any count.
 void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pairs,
-                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double accuracy);
+                       const std::vector<Handle(Geom_BSplineSurface)>& surfaces, double accuracy,
+                       int threads = 1);
 
 }  // namespace nurbslod::occ

@@ -609,7 +609,7 @@ Model importModel(const TopoDS_Shape& original, int threads) {
     for (const FreeEdgePair& pair : pairs)
         if (edgeIndex.IsBound(pair.kept) && edgeIndex.IsBound(pair.joined))
             pairIndices.emplace_back(edgeIndex.Find(pair.kept), edgeIndex.Find(pair.joined));
-    joinFreeEdgePairs(model, pairIndices, surfaces, pcurveAccuracy);
+    joinFreeEdgePairs(model, pairIndices, surfaces, pcurveAccuracy, threads);
 
     return model;
 }
