@@ -150,10 +150,12 @@ void addToleranceOptions(CLI::App* command, ToleranceArguments& arguments,
 
 // ---- tessellate ----------------------------------------------------------------------------
 
-// Prints "tessellated 120/415 faces" on stderr at most every half second. Called from the
-// tessellator's worker threads: a thread that finds another one printing simply goes on.
+// Prints "<what> 120/415 faces" (imported, tessellated) on stderr at most every half second,
+// and the final count where it printed any. Called from worker threads: a thread that finds
+// another one printing simply goes on.
 class ProgressPrinter {
 public:
+    explicit ProgressPrinter(const char* what) : what_(what) {}
     void operator()(std::size_t done, std::size_t total) {
         std::unique_lock lock(mutex_, std::try_to_lock);
         if (!lock.owns_lock()) return;
@@ -161,13 +163,18 @@ public:
         if (now - last_ < interval) return;
         last_ = now;
         printed_ = true;
-        std::fprintf(stderr, "tessellated %zu/%zu faces\n", done, total);
+        std::fprintf(stderr, "%s %zu/%zu faces\n", what_, done, total);
         std::fflush(stderr);
     }
-    bool printed() const { return printed_; }
+    void finish(std::size_t total) const {
+        if (!printed_) return;
+        std::fprintf(stderr, "%s %zu/%zu faces\n", what_, total, total);
+        std::fflush(stderr);
+    }
 
 private:
     static constexpr std::chrono::milliseconds interval{500};
+    const char* what_;
     std::mutex mutex_;
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
     bool printed_ = false;
@@ -204,7 +211,11 @@ int runTessellate(const TessellateArguments& arguments) {
 
     const TopoDS_Shape shape = readModel(arguments.model);
     const auto read = std::chrono::steady_clock::now();
-    const Model model = occ::importModel(shape, arguments.threads);
+    ProgressPrinter importing("imported");
+    const Model model = occ::importModel(
+        shape, arguments.threads,
+        [&importing](std::size_t done, std::size_t total) { importing(done, total); });
+    importing.finish(model.faces.size());
     const auto imported = std::chrono::steady_clock::now();
 
     TessellationOptions options;
@@ -212,14 +223,13 @@ int runTessellate(const TessellateArguments& arguments) {
         absoluteTolerance(arguments.tolerance, model.boundingBoxDiagonal, defaultRelativeTolerance);
     options.mode = arguments.mode == "approximate" ? ErrorMode::Approximate : ErrorMode::Guaranteed;
     options.threads = arguments.threads;
-    auto progress = std::make_shared<ProgressPrinter>();
+    auto progress = std::make_shared<ProgressPrinter>("tessellated");
     options.progress = [progress](std::size_t done, std::size_t total) {
         (*progress)(done, total);
     };
 
     TessellationResult result = tessellateModel(model, options);
-    if (progress->printed())
-        std::fprintf(stderr, "tessellated %d/%d faces\n", result.faces, result.faces);
+    progress->finish(static_cast<std::size_t>(result.faces));
 
     try {
         writeMesh(result.mesh, arguments.output);

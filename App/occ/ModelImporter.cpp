@@ -43,6 +43,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -466,7 +467,8 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
 
 }  // namespace
 
-Model importModel(const TopoDS_Shape& original, int threads) {
+Model importModel(const TopoDS_Shape& original, int threads,
+                  const std::function<void(std::size_t, std::size_t)>& progress) {
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
@@ -512,7 +514,7 @@ Model importModel(const TopoDS_Shape& original, int threads) {
     // Each face on its own: it reads the shared edges and writes only its own slot, so the
     // faces may go in parallel (oneTBB) where more than one thread is allowed.
     std::vector<char> convertLater(model.faces.size(), 0);
-    auto importSlot = [&](int slot) {
+    auto importOneSlot = [&](int slot) {
         const int k = slot + 1;
         const SurfaceConversion conversion = conversionOf(sewn.faces[slot]);
         if (conversion == SurfaceConversion::NurbsConvert) {
@@ -530,6 +532,13 @@ Model importModel(const TopoDS_Shape& original, int threads) {
             }
             model.faces[slot] = failedFace(k, failure);
         }
+    };
+    // a face left for NurbsConvert counts as done here: those few are converted together after
+    std::atomic<std::size_t> facesDone{0};
+    auto importSlot = [&](int slot) {
+        importOneSlot(slot);
+        const std::size_t done = ++facesDone;
+        if (progress) progress(done, model.faces.size());
     };
     const int faceCount = static_cast<int>(model.faces.size());
     if (threads == 1) {

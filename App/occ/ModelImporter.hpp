@@ -4,6 +4,8 @@
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <cstddef>
+#include <functional>
 
 #include "tessellate/Model.hpp"
 
@@ -15,8 +17,10 @@ namespace nurbslod::occ {
 // surfaces through BRepBuilderAPI_NurbsConvert, the face's location applied to the control
 // points, loops from the edges' pcurves. A face that cannot be converted keeps its slot with
 // `error` set. threads: how many threads convert the faces (1: the calling thread alone, 0: all
-// cores); the model is the same for any count.
-Model importModel(const TopoDS_Shape& shape, int threads = 1);
+// cores); the model is the same for any count. progress, where given, is called with (faces
+// converted, faces) after each face, from the converting threads.
+Model importModel(const TopoDS_Shape& shape, int threads = 1,
+                  const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 // The NURBS form of a face's surface as the importer sees it (analytic surfaces converted,
 // periodic knots clamped, the face's location applied), and its copy in our own type: the

@@ -13,7 +13,10 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <algorithm>
 #include <map>
+#include <mutex>
+#include <numeric>
 #include <vector>
 
 #include "occ/ModelImporter.hpp"
@@ -172,6 +175,28 @@ TEST(ModelImporter, TheModelIsTheSameWithAnyThreadCount) {
                 }
             }
         }
+    }
+}
+
+// Progress comes after each face, from whichever thread converted it: every count from 1 to the
+// number of faces once, each with that number as the total.
+TEST(ModelImporter, ReportsProgressForEveryFace) {
+    const TopoDS_Shape parts = analyticParts();
+    for (const int threads : {1, 2}) {
+        std::mutex mutex;
+        std::vector<std::size_t> counts;
+        std::size_t totals = 0;
+        const Model model =
+            occ::importModel(parts, threads, [&](std::size_t done, std::size_t total) {
+                std::lock_guard lock(mutex);
+                counts.push_back(done);
+                totals = std::max(totals, total);
+            });
+        std::sort(counts.begin(), counts.end());
+        std::vector<std::size_t> expected(model.faces.size());
+        std::iota(expected.begin(), expected.end(), std::size_t(1));
+        EXPECT_EQ(counts, expected) << threads << " threads";
+        EXPECT_EQ(totals, model.faces.size());
     }
 }
 
