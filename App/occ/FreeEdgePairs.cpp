@@ -1,8 +1,5 @@
 #include "occ/FreeEdgePairs.hpp"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
@@ -21,6 +18,7 @@
 #include "occ/ModelImporter.hpp"
 #include "occ/NearIsoparametricCurve.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
+#include "tessellate/ForEachIndex.hpp"
 
 namespace nurbslod::occ {
 
@@ -274,19 +272,13 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
         result.curve.last = curveA.last;
         result.curve.edge = kept;
         if (!result.along) result.curve.reversed = !result.curve.reversed;
-        result.tolerance =
-            std::max({model.edges[kept].tolerance, model.edges[joined].tolerance, gap});
+        result.tolerance = std::max(copyTolerance, gap);
         // the remade curve follows the kept one's points: along an isoparametric line of its
         // own surface to within rounding, or as near as the copies are
         straightenNearIsoparametric(faceB.surface, result.curve, result.tolerance);
         result.made = true;
     };
-    if (threads == 1) {
-        for (std::size_t i = 0; i < pairs.size(); ++i) joinPair(i);
-    } else {
-        tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-        arena.execute([&] { tbb::parallel_for(std::size_t(0), pairs.size(), joinPair); });
-    }
+    forEachIndex(pairs.size(), threads, joinPair);
     for (std::size_t i = 0; i < pairs.size(); ++i) {
         const Joined& result = joinedCurves[i];
         if (!result.made) continue;

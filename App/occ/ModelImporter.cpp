@@ -1,8 +1,5 @@
 #include "occ/ModelImporter.hpp"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
@@ -57,6 +54,7 @@
 #include "occ/NearIsoparametricCurve.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
 #include "occ/ShapeDiagonal.hpp"
+#include "tessellate/ForEachIndex.hpp"
 
 namespace nurbslod::occ {
 
@@ -541,12 +539,7 @@ Model importModel(const TopoDS_Shape& original, int threads,
         if (progress) progress(done, model.faces.size());
     };
     const int faceCount = static_cast<int>(model.faces.size());
-    if (threads == 1) {
-        for (int slot = 0; slot < faceCount; ++slot) importSlot(slot);
-    } else {
-        tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-        arena.execute([&] { tbb::parallel_for(0, faceCount, importSlot); });
-    }
+    forEachIndex(faceCount, threads, importSlot);
     std::vector<int> toConvert;  // 0-based face slots left for NurbsConvert
     for (int slot = 0; slot < faceCount; ++slot)
         if (convertLater[slot]) toConvert.push_back(slot);

@@ -204,20 +204,21 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
             slid = true;
         return foot;
     };
-    auto sampleAt = [&](double t) {
-        const auto known = projections.find(t);
-        if (known != projections.end()) return known->second.uv;
-        return projections.emplace(t, Projection{project(t), gp_Pnt(), false}).first->second.uv;
+    auto projectionAt = [&](double t) -> Projection& {
+        auto known = projections.find(t);
+        if (known == projections.end())
+            known = projections.emplace(t, Projection{project(t), gp_Pnt(), false}).first;
+        return known->second;
     };
+    auto sampleAt = [&](double t) { return projectionAt(t).uv; };
     // the surface point of a projection, evaluated once: a midpoint whose interval is not
     // refined is compared again in the next round
-    auto surfacePointAt = [&](double t) {
-        Projection& known = projections.find(t)->second;
-        if (!known.evaluated) {
-            known.point = spans.value(known.uv.X(), known.uv.Y());
-            known.evaluated = true;
+    auto surfacePointOf = [&](Projection& projection) {
+        if (!projection.evaluated) {
+            projection.point = spans.value(projection.uv.X(), projection.uv.Y());
+            projection.evaluated = true;
         }
-        return known.point;
+        return projection.point;
     };
     // Samples are added where the interpolant misses, not everywhere: the pcurve of a circle's
     // or a helix's edge on a surface's rational form has a kink in its speed wherever it
@@ -261,9 +262,10 @@ Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>&
         const Geom2dAdaptor_Curve fittedCurve(result);  // evaluates through its span cache
         for (int k = 0; k + 1 < count; ++k) {
             const double t = 0.5 * (parameters[k] + parameters[k + 1]);
-            sampleAt(t);
+            Projection& projected = projectionAt(t);
             const gp_Pnt2d fitted = fittedCurve.Value(t);
-            const double miss = spans.value(fitted.X(), fitted.Y()).Distance(surfacePointAt(t));
+            const double miss =
+                spans.value(fitted.X(), fitted.Y()).Distance(surfacePointOf(projected));
             worst = std::max(worst, miss);
             if (miss > 0.01 * accuracy && t > parameters[k] && t < parameters[k + 1])
                 refined.push_back(t);
