@@ -95,6 +95,15 @@ std::string jsonNumber(double value) {
     return error == std::errc() ? std::string(digits, end) : "null";
 }
 
+// [{"face":N,"reason":"..."}, ...]
+std::string faceList(const std::vector<FaceFailure>& faces) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        out += std::string(i ? "," : "") + "{\"face\":" + std::to_string(faces[i].face) +
+               ",\"reason\":" + jsonString(faces[i].reason) + "}";
+    return out + "]";
+}
+
 std::string jsonIntegers(const std::vector<int>& values) {
     std::string out = "[";
     for (std::size_t i = 0; i < values.size(); ++i)
@@ -250,11 +259,8 @@ int runTessellate(const TessellateArguments& arguments) {
         jsonNumber(std::chrono::duration<double>(imported - read).count()) +
         ",\"tolerance\":" + jsonNumber(options.tolerance) +
         ",\"mode\":" + jsonString(arguments.mode) + ",\"output\":" + jsonString(arguments.output) +
-        ",\"faces_failed\":[";
-    for (std::size_t i = 0; i < result.failures.size(); ++i)
-        json += std::string(i ? "," : "") + "{\"face\":" + std::to_string(result.failures[i].face) +
-                ",\"reason\":" + jsonString(result.failures[i].reason) + "}";
-    json += "]}";
+        ",\"faces_warned\":" + faceList(result.warnings) +
+        ",\"faces_failed\":" + faceList(result.failures) + "}";
     std::cout << json << std::endl;
     return exitSuccess;
 }

@@ -55,6 +55,7 @@
 #include "occ/PcurveFromEdgeCurve.hpp"
 #include "occ/ShapeDiagonal.hpp"
 #include "tessellate/ForEachIndex.hpp"
+#include "trim/LoopWinding.hpp"
 
 namespace nurbslod::occ {
 
@@ -459,6 +460,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
         for (size_t c = 0; c < result.loops[l].curves.size(); ++c)
             straightenNearIsoparametric(result.surface, result.loops[l].curves[c],
                                         BRep_Tool::Tolerance(edgesOnFace[l][c].edge));
+    if (const auto problem = loopWindingProblem(result)) result.warning = *problem;
     surfaceOut = unwrapped;
     return result;
 }

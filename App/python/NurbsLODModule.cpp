@@ -166,13 +166,16 @@ TessellationResult run(const Call& call) {
 // and import_seconds the reading of the shape and its faces' conversion into trimmed NURBS.
 py::dict summaryDict(const TessellationResult& result, const Call& call,
                      const std::optional<std::string>& output = std::nullopt) {
-    py::list failures;
-    for (const FaceFailure& failure : result.failures) {
-        py::dict entry;
-        entry["face"] = failure.face;
-        entry["reason"] = failure.reason;
-        failures.append(entry);
-    }
+    auto faceList = [](const std::vector<FaceFailure>& faces) {
+        py::list list;
+        for (const FaceFailure& face : faces) {
+            py::dict entry;
+            entry["face"] = face.face;
+            entry["reason"] = face.reason;
+            list.append(entry);
+        }
+        return list;
+    };
     py::dict summary;
     summary["faces"] = result.faces;
     summary["triangles"] = result.mesh.triangles.size();
@@ -186,7 +189,8 @@ py::dict summaryDict(const TessellationResult& result, const Call& call,
     if (output) {
         summary["output"] = *output;
     }
-    summary["faces_failed"] = failures;
+    summary["faces_warned"] = faceList(result.warnings);
+    summary["faces_failed"] = faceList(result.failures);
     return summary;
 }
 
@@ -374,7 +378,8 @@ Returns a dict of numpy arrays and a summary:
   face_ids         (T,)   int32    1-based face index: shape.Faces[face_id - 1]
   summary          dict: faces, triangles, vertices, seconds (tessellation),
                    total_seconds (the whole call), tolerance (absolute), mode,
-                   faces_failed (list of {face, reason}); the keys of the command
+                   faces_warned and faces_failed (lists of {face, reason}: meshed
+                   with a word on the input, not meshed); the keys of the command
                    line's JSON summary
 
 Raises ValueError for a bad tolerance, mode or thread count, NurbsLOD.ReadError (a

@@ -1783,6 +1783,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 replaceFaceTriangles(result.mesh, f + 1, retried.mesh);
         }
     }
+    std::vector<char> failed(model.faces.size(), 0);
+    for (const auto& failure : result.failures)
+        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
+            failed[failure.face - 1] = 1;
+    for (size_t f = 0; f < model.faces.size(); ++f)
+        if (!model.faces[f].warning.empty() && !failed[f])
+            result.warnings.push_back({static_cast<int>(f) + 1, model.faces[f].warning});
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -33,6 +33,8 @@ struct TessellationResult {
     double seconds = 0;
     double tolerance = 0;
     std::vector<FaceFailure> failures;
+    // faces meshed, with a word on their input (TrimmedSurface::warning), in face order
+    std::vector<FaceFailure> warnings;
     // per face (index face - 1), filled when TessellationOptions::keepFaceVertices is set
     std::vector<FaceVertexSet> faceVertices;
 };

@@ -16,6 +16,9 @@ struct TrimmedSurface {
     std::vector<TrimLoop> loops;
     bool reversed = false;
     std::string error;  // set when the face could not be imported; the face is then skipped
+    // set when the face is meshed but its input is not what OpenCASCADE would make of it (a
+    // hole wound like the outer wire): the user is told, and a judge may disagree with its mesh
+    std::string warning;
 };
 
 }  // namespace nurbslod

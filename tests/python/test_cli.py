@@ -13,6 +13,7 @@ import NurbsLOD
 from nurbslod_testing import CLI, TempDirTestCase
 
 BAD_INPUT = 2
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
 
 
 class CommandLine(TempDirTestCase):
@@ -56,6 +57,26 @@ class CommandLine(TempDirTestCase):
         self.assertEqual(sorted(python), sorted(summary))
         for key in ("faces", "triangles", "vertices", "tolerance", "mode", "faces_failed"):
             self.assertEqual(python[key], summary[key], key)
+
+    def test_hole_wound_like_outer_wire_is_meshed_and_reported(self):
+        # tests/data/hole_wound_like_outer.brep: the top of a 10 x 10 x 1 box less a cylinder of
+        # radius 2 about (5, 5), its hole's wire reversed in the file (OpenCASCADE's check:
+        # BadOrientationOfSubshape)
+        model = os.path.join(DATA, "hole_wound_like_outer.brep")
+        out = self.path("hole.obj")
+        run = self.nurbslod("tessellate", model, "-o", out, "--tolerance", "0.01")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        summary = json.loads(run.stdout.strip().splitlines()[-1])
+        self.assertEqual(summary["faces_failed"], [])
+        self.assertEqual([entry["face"] for entry in summary["faces_warned"]], [1])
+        self.assertIn("same way round", summary["faces_warned"][0]["reason"])
+        self.assertGreater(summary["triangles"], 0)
+        python = NurbsLOD.tessellate(model, tolerance=0.01)["summary"]
+        self.assertEqual(python["faces_warned"], summary["faces_warned"])
+        # the good model has no word on any face
+        good = self.nurbslod("tessellate", self.model, "-o", self.path("box.obj"),
+                             "--tolerance", "0.01")
+        self.assertEqual(json.loads(good.stdout.strip().splitlines()[-1])["faces_warned"], [])
 
     def test_missing_model(self):
         missing = self.path("missing.step")

@@ -24,6 +24,7 @@ protected:
                         HomogeneousPoint3(1, 0, 0, 1), HomogeneousPoint3(1, 1, 0, 1)}),
         {},
         false,
+        {},
         {}};
     std::vector<Point3> positions;
 
