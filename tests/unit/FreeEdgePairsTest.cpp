@@ -130,6 +130,40 @@ TEST(FreeEdgePairs, ClosedCopiesJoinToo) {
     EXPECT_GT(closedMeshTriangles(loose, model, 0.05), 0u);
 }
 
+// The two faces of a joined edge give the same point at every edge parameter: copies written
+// with one parameter keep their own curve carried onto the kept one's parameter (lines and
+// circles of loose faces, each way round), and it must be the same point, not the copy's
+// point at another parameter.
+TEST(FreeEdgePairs, JoinedCurvesAgreeAtEveryParameter) {
+    for (const TopoDS_Compound& loose : {looseBox(), looseFacesOfParts()}) {
+        const Model model = occ::importModel(loose);
+        std::map<int, std::vector<std::pair<const TrimmedSurface*, const TrimCurve*>>> uses;
+        for (const auto& face : model.faces)
+            for (const auto& loop : face.loops)
+                for (const auto& curve : loop.curves)
+                    if (!curve.seam && !curve.degenerated)
+                        uses[curve.edge].push_back({&face, &curve});
+        int compared = 0;
+        for (const auto& [edge, faces] : uses) {
+            ASSERT_EQ(faces.size(), 2u) << "edge " << edge;
+            const auto& [faceA, curveA] = faces[0];
+            const auto& [faceB, curveB] = faces[1];
+            EXPECT_DOUBLE_EQ(curveA->first, curveB->first);
+            EXPECT_DOUBLE_EQ(curveA->last, curveB->last);
+            for (int k = 0; k <= 16; ++k) {
+                const double t = curveA->first + (curveA->last - curveA->first) * k / 16;
+                const Point2 a = curveA->pcurve.point(t), b = curveB->pcurve.point(t);
+                EXPECT_LT((faceA->surface.point(a.x(), a.y()) - faceB->surface.point(b.x(), b.y()))
+                              .norm(),
+                          1e-7)
+                    << "edge " << edge << " at " << t;
+                ++compared;
+            }
+        }
+        EXPECT_GT(compared, 100);
+    }
+}
+
 // The pairs are joined in parallel where threads allow: the model is the same, bit for bit,
 // with any thread count.
 TEST(FreeEdgePairs, JoinsTheSameWithAnyThreadCount) {
