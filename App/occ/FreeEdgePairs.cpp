@@ -261,8 +261,8 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
         // each of a's samples is b's nearest to a's point, to 5e-9 of b's range (no nearer
         // point 1e-8 of it to either side). b then keeps its own curve, carried onto a's
         // parameter by that map, and the pair needs neither the nearest-point searches below
-        // nor a curve remade from a's points: 92 of hammer.iges's 104 pairs, a tenth of its
-        // import.
+        // nor a curve remade from a's points: 92 of hammer.iges's 104 pairs, whose import took
+        // 35.5 ms instead of 27.2 without this.
         const double rangeB = ownCurveB.last - ownCurveB.first;
         auto affineGap = [&](bool along) -> std::optional<double> {
             const double step = 1e-8 * rangeB;
