@@ -1762,10 +1762,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // costs about as much as the first (MAT.brep at relative 1e-3: 0.4 s more), never won on
     // the sample models (MAT.brep: 15,976 triangles and 244 open edges at 1e-3, 446 on the
     // second try; the revolved profile: 5,983 and 55, 133).
+    // the faces listed as failed (the retries below list none)
+    std::vector<char> failed(model.faces.size(), 0);
+    for (const auto& failure : result.failures)
+        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
+            failed[failure.face - 1] = 1;
     if (options.mode == ErrorMode::Guaranteed && options.retryLoneFaces &&
         options.freeEdgesTakeSurfaceShare && !options.keepFaceVertices) {
-        std::vector<char> failed(model.faces.size(), 0);
-        for (const auto& failure : result.failures) failed[failure.face - 1] = 1;
         TessellationOptions alone = options;
         alone.progress = nullptr;
         for (const int f : loneBoxFaces(model, kExactEdge * options.tolerance)) {
@@ -1783,10 +1786,6 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 replaceFaceTriangles(result.mesh, f + 1, retried.mesh);
         }
     }
-    std::vector<char> failed(model.faces.size(), 0);
-    for (const auto& failure : result.failures)
-        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
-            failed[failure.face - 1] = 1;
     for (size_t f = 0; f < model.faces.size(); ++f)
         if (!model.faces[f].warning.empty() && !failed[f])
             result.warnings.push_back({static_cast<int>(f) + 1, model.faces[f].warning});
