@@ -11,6 +11,7 @@
 #include "tessellate/CellErrorBound.hpp"
 #include "trim/CurveOnSurface.hpp"
 #include "trim/EdgeDiscretizer.hpp"
+#include "trim/LoopWinding.hpp"
 
 namespace nurbslod {
 
@@ -72,25 +73,8 @@ double regionShareOfBox(const TrimmedSurface& face, const std::array<KdTreeGrid,
     // each loop's area by the shoelace sum over its curves sampled evenly, in the loop's order;
     // the orientation of loops is not trusted (the tessellator fills by the even-odd rule), so
     // the largest loop is taken as the outer one and the others as holes in it
-    constexpr int kSamples = 16;
     std::vector<double> areas;
-    for (const auto& loop : face.loops) {
-        double twiceArea = 0;
-        for (const auto& curve : loop.curves) {
-            const CurveOnSurface use(face.surface, curve.pcurve, curve.first, curve.last);
-            auto at = [&](int k) {
-                const double s = double(k) / kSamples;
-                return use.uv(curve.reversed ? 1 - s : s);
-            };
-            Point2 previous = at(0);
-            for (int k = 1; k <= kSamples; ++k) {
-                const Point2 next = at(k);
-                twiceArea += previous.x() * next.y() - next.x() * previous.y();
-                previous = next;
-            }
-        }
-        areas.push_back(0.5 * std::abs(twiceArea));
-    }
+    for (const auto& loop : face.loops) areas.push_back(std::abs(signedArea(loopPolygon(loop))));
     if (areas.empty()) return 0;
     std::sort(areas.begin(), areas.end());
     double region = areas.back();

@@ -8,11 +8,10 @@ namespace nurbslod {
 std::vector<Point2> loopPolygon(const TrimLoop& loop, int samplesPerCurve) {
     std::vector<Point2> polygon;
     for (const TrimCurve& curve : loop.curves)
-        for (int k = 0; k < samplesPerCurve; ++k) {
+        for (int k = 0; k <= samplesPerCurve; ++k) {
             const double s = double(k) / samplesPerCurve;
-            const double t = curve.reversed ? curve.last + (curve.first - curve.last) * s
-                                            : curve.first + (curve.last - curve.first) * s;
-            polygon.push_back(curve.pcurve.point(t));
+            const double along = curve.reversed ? 1 - s : s;
+            polygon.push_back(curve.pcurve.point(curve.first + along * (curve.last - curve.first)));
         }
     return polygon;
 }

@@ -10,8 +10,10 @@
 
 namespace nurbslod {
 
-// The loop's curves sampled in (u, v) in the order and direction the loop runs them, each
-// curve from its start to just before its end (the next curve's start).
+// The loop's curves sampled in (u, v) in the order and direction the loop runs them,
+// samplesPerCurve + 1 evenly spaced points a curve, its ends included (where the loop closes, a
+// curve's end is the next one's start, and the shoelace sum of signedArea is the same as without
+// the repeated points).
 std::vector<Point2> loopPolygon(const TrimLoop& loop, int samplesPerCurve = 16);
 
 // The area the polygon encloses, positive where it runs counter-clockwise.
