@@ -26,6 +26,7 @@
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/FoldedPairs.hpp"
 #include "tessellate/KdTreeAlignedHalving.hpp"
+#include "tessellate/LargestAngleFirst.hpp"
 #include "tessellate/LoneFaces.hpp"
 #include "tessellate/NeedleSplit.hpp"
 #include "tessellate/PointWeld.hpp"
@@ -1786,6 +1787,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 replaceFaceTriangles(result.mesh, f + 1, retried.mesh);
         }
     }
+    // single-precision readers of the mesh measure needles right (LargestAngleFirst.hpp)
+    startAtLargestAngle(result.mesh);
     for (size_t f = 0; f < model.faces.size(); ++f)
         if (!model.faces[f].warning.empty() && !failed[f])
             result.warnings.push_back({static_cast<int>(f) + 1, model.faces[f].warning});
