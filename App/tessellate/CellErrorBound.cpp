@@ -594,19 +594,19 @@ double farthestNetPointAt(const BezierPatch& patch, int direction) {
 }
 
 int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
-                           bool byDistance, double pieceFraction) {
+                           bool byDistance, double pieceFraction, ErrorMode mode) {
     if (centreDeviation(patch) > 4 * target) return preferred;
     auto halves = [&](int direction) {
         return direction == 0
                    ? std::array{patch.restricted(0, 0.5, 0, 1), patch.restricted(0.5, 1, 0, 1)}
                    : std::array{patch.restricted(0, 1, 0, 0.5), patch.restricted(0, 1, 0.5, 1)};
     };
-    // as the kd-tree would find it of the half (a centre beyond the target is not bounded)
+    // as the kd-tree would find it of the half (a centre beyond the target is not bounded; the
+    // approximate measure samples the centre, so it does not settle such a half either)
     auto settles = [&](const BezierPatch& half) {
         return !centreBeyond(half, target) &&
-               cellErrorBound(half, ErrorMode::Guaranteed, target, trimmedCell, byDistance,
-                              pieceFraction)
-                       .measure(ErrorMode::Guaranteed, trimmedCell) <= target;
+               cellErrorBound(half, mode, target, trimmedCell, byDistance, pieceFraction)
+                       .measure(mode, trimmedCell) <= target;
     };
     // the other halving's centres first: most cells fail there, before any bound is computed
     const int other = 1 - preferred;

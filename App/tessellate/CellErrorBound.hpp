@@ -159,9 +159,9 @@ int preferredSplitDirection(const BezierPatch& patch);
 // where that point lies on the cell's border in that direction or the net does not bend.
 double farthestNetPointAt(const BezierPatch& patch, int direction);
 
-// The direction to halve a cell in mode Guaranteed: the one the bound prefers (`preferred`), or
-// the other where halving in the preferred direction leaves a half above `target` and halving in
-// the other settles both halves (each half bounded as cellErrorBound does with the other
+// The direction to halve a cell: the one the bound prefers (`preferred`), or the other where
+// halving in the preferred direction leaves a half above `target` and halving in the other
+// settles both halves (each half measured as cellErrorBound does in `mode` with the other
 // arguments). A cell whose bound is larger along one direction (a parameter running unevenly
 // along a straight line: bug28366_fuselage.stp's long span) while its surface bends along the
 // other settles in two pieces where the preferred halving needed three or more. Only cells
@@ -169,6 +169,7 @@ double farthestNetPointAt(const BezierPatch& patch, int direction);
 // bound of section 5.2 falls with the square of the side), so the halves of a cell farther off
 // hardly settle, and the test costs four patch restrictions and up to four bounds.
 int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
-                           bool byDistance, double pieceFraction);
+                           bool byDistance, double pieceFraction,
+                           ErrorMode mode = ErrorMode::Guaranteed);
 
 }  // namespace nurbslod

@@ -895,11 +895,10 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // the other halving where it settles both halves and the bound's does not (the
         // command line's meshes; the display's keep the paper's cut). The second build (even
         // columns) reads the direction from the decisions.
-        if (mode_ == ErrorMode::Guaranteed && choices_.middleSplits && canU && canV &&
-            known == decisions.byRect.end()) {
+        if (choices_.middleSplits && canU && canV && known == decisions.byRect.end()) {
             preferredDirection =
                 settlingSplitDirection(piece, preferredDirection, target, trimmedCell,
-                                       choices_.flatCellsByDistance, pieceFraction);
+                                       choices_.flatCellsByDistance, pieceFraction, mode_);
             if (node.full && decisions.record)
                 decisions.byRect[key].preferredDirection = preferredDirection;
         }
