@@ -601,8 +601,9 @@ int settlingSplitDirection(const BezierPatch& patch, int preferred, double targe
                    ? std::array{patch.restricted(0, 0.5, 0, 1), patch.restricted(0.5, 1, 0, 1)}
                    : std::array{patch.restricted(0, 1, 0, 0.5), patch.restricted(0, 1, 0.5, 1)};
     };
-    // as the kd-tree would find it of the half (a centre beyond the target is not bounded; the
-    // approximate measure samples the centre, so it does not settle such a half either)
+    // as the kd-tree would find it of the half (a centre beyond the target is not bounded; in
+    // approximate mode, whose kd-tree measures such a cell, the half counts as unsettled too,
+    // which only keeps the preferred direction more often)
     auto settles = [&](const BezierPatch& half) {
         return !centreBeyond(half, target) &&
                cellErrorBound(half, mode, target, trimmedCell, byDistance, pieceFraction)
