@@ -169,7 +169,6 @@ double farthestNetPointAt(const BezierPatch& patch, int direction);
 // bound of section 5.2 falls with the square of the side), so the halves of a cell farther off
 // hardly settle, and the test costs four patch restrictions and up to four bounds.
 int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
-                           bool byDistance, double pieceFraction,
-                           ErrorMode mode = ErrorMode::Guaranteed);
+                           bool byDistance, double pieceFraction, ErrorMode mode);
 
 }  // namespace nurbslod
