@@ -21,6 +21,7 @@
 #include <Geom_BezierCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Conic.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_Line.hxx>
@@ -227,6 +228,29 @@ SurfaceConversion conversionOf(const TopoDS_Face& face) {
         surface->IsKind(STANDARD_TYPE(Geom_SweptSurface)))
         return SurfaceConversion::NewParameter;
     return SurfaceConversion::NurbsConvert;
+}
+
+// The circular cylinder the face's surface is in the file, placed where the face's location puts
+// it; none for any other surface.
+std::optional<Cylinder> fileCylinder(const TopoDS_Face& face) {
+    TopLoc_Location location;
+    const Handle(Geom_CylindricalSurface) cylinder =
+        Handle(Geom_CylindricalSurface)::DownCast(untrimmedSurface(face, location));
+    if (cylinder.IsNull()) return std::nullopt;
+    gp_Ax1 axis = cylinder->Axis();
+    if (!location.IsIdentity()) axis.Transform(location.Transformation());
+    const gp_Pnt origin = axis.Location();
+    const gp_Dir direction = axis.Direction();
+    // a location may scale; the radius scales with it
+    const double scale = location.IsIdentity() ? 1.0 : location.Transformation().ScaleFactor();
+    Cylinder result;
+    result.origin = Point3(origin.X(), origin.Y(), origin.Z());
+    result.axis = Vector3(direction.X(), direction.Y(), direction.Z());
+    result.radius = std::abs(scale) * cylinder->Radius();
+    if (!result.origin.allFinite() || !result.axis.allFinite() || !(result.radius > 0) ||
+        !std::isfinite(result.radius))
+        return std::nullopt;
+    return result;
 }
 
 // A loop curve's edge and the file's pcurve of it on the face, as read once: for a plane
@@ -461,6 +485,8 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
             straightenNearIsoparametric(result.surface, result.loops[l].curves[c],
                                         BRep_Tool::Tolerance(edgesOnFace[l][c].edge));
     if (const auto problem = loopWindingProblem(result)) result.warning = *problem;
+    // a face NurbsConvert made (newParameter false, a B-spline in the file) says nothing here
+    result.cylinder = fileCylinder(face);
     surfaceOut = unwrapped;
     return result;
 }

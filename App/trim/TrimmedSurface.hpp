@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/BSplineSurface.hpp"
+#include "geometry/Cylinder.hpp"
 #include "trim/TrimLoop.hpp"
 
 namespace nurbslod {
@@ -19,6 +21,9 @@ struct TrimmedSurface {
     // set when the face is meshed but its input is not what OpenCASCADE would make of it (a
     // hole wound like the outer wire): the user is told, and a judge may disagree with its mesh
     std::string warning;
+    // The circular cylinder the surface is, where the file gave the face as one (its NURBS form
+    // is the same surface): the tessellator may then triangulate the face in its unrolled plane.
+    std::optional<Cylinder> cylinder;
 };
 
 }  // namespace nurbslod

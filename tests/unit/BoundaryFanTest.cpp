@@ -25,6 +25,7 @@ protected:
         {},
         false,
         {},
+        {},
         {}};
     std::vector<Point3> positions;
 
