@@ -552,9 +552,23 @@ FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& 
       patches_(face.surface),
       // flat to a twentieth of the surface share: the triangles in its plane spend at most twice
       // that of the share, which the kd-tree's cells would have spent in full
-      plane_(facePlane(face.surface, 0.05 * budget.surface)) {}
+      plane_(facePlane(face.surface, 0.05 * budget.surface)) {
+    // on the cylinder to the same twentieth: its points' offsets stay within the share
+    if (!plane_ && face.cylinder)
+        cylinder_ = faceCylinderFrame(face.surface, *face.cylinder, 0.05 * budget.surface);
+}
 
 FaceTessellator::~FaceTessellator() = default;
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::developedTriangles(
+    const std::vector<std::vector<Point3>>& positions) const {
+    if (plane_) return triangulateInPlane(*plane_, positions);
+    // A trimmed cell's share for every triangle (each may have a chord for a side), less twice
+    // the flatness that faceCylinderFrame allowed: the corners lie on the NURBS form, which may
+    // be that far from the cylinder that the bound is for, and so may the surface under them.
+    if (cylinder_) return triangulateOnCylinder(*cylinder_, positions, 0.9 * budget_.surface);
+    return std::nullopt;
+}
 
 void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
     double u0 = std::numeric_limits<double>::max(), v0 = u0;
@@ -1191,8 +1205,8 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // A face in a plane whose loops make one polygon there takes no kd-tree: triangulate makes
     // its triangles in the plane, and no cell side cuts its chords (the loops' points are its
     // surface's at their (u, v) here, within the share gap of the points it gets).
-    if (plane_) {
-        if (triangulateInPlane(*plane_, ringsInSpace(loops, [&](const BoundaryPoint& bp) {
+    if (plane_ || cylinder_) {
+        if (developedTriangles(ringsInSpace(loops, [&](const BoundaryPoint& bp) {
                 return face_.surface.point(bp.uv.x(), bp.uv.y());
             }))) {
             leaves_.clear();
@@ -1244,10 +1258,11 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     // the polygon of its chords exactly, as the kd-tree's triangles, mapped from (u, v), do
     // within their bound.
     std::optional<std::vector<std::array<std::uint32_t, 3>>> inPlane;
-    if (plane_) {
-        inPlane = triangulateInPlane(*plane_, ringsInSpace(loops, [&](const BoundaryPoint& bp) {
-            return sharedPositions[bp.vertex];
-        }));
+    // (a face on a cylinder whose first pass took a kd-tree keeps it: its unrolled triangles
+    // over more points would rarely be narrower, and they cost an ear clipping of the face)
+    if (plane_ || (cylinder_ && leaves_.empty())) {
+        inPlane = developedTriangles(ringsInSpace(
+            loops, [&](const BoundaryPoint& bp) { return sharedPositions[bp.vertex]; }));
     }
     // One that findCrossings left without a kd-tree, whose loops with their final points make
     // no polygon in the plane, takes its kd-tree now: the points its cells cut on shared chords

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/BezierPatchGrid.hpp"
+#include "tessellate/CylinderDevelopment.hpp"
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/FaceBoundary.hpp"
 #include "tessellate/FaceMesh.hpp"
@@ -97,6 +98,13 @@ private:
     CellChoices choices_;
     BezierPatchGrid patches_;
     std::optional<FacePlane> plane_;  // where the surface lies in a plane (triangulate)
+    // where the surface is a cylinder (and not a plane): its face may be triangulated unrolled
+    std::optional<CylinderFrame> cylinder_;
+    // The triangles of a face in a plane or on a cylinder over its loops' points at `positions`
+    // (FlatFace, CylinderDevelopment); none where it has neither, or they make no polygon there
+    // within the bounds.
+    std::optional<std::vector<std::array<std::uint32_t, 3>>> developedTriangles(
+        const std::vector<std::vector<Point3>>& positions) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;
