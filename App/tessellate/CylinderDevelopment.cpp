@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <tuple>
+#include <utility>
 
 #include "tessellate/RingTriangulation.hpp"
 
@@ -191,10 +192,9 @@ double unrolledTriangleBound(double radius, double angle) {
     return radius * angle * angle / 8;
 }
 
-std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
-    const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings,
-    double surfaceShare) {
-    if (rings.empty() || !(surfaceShare > 0)) return std::nullopt;
+std::optional<UnrolledTriangles> triangulateUnrolled(
+    const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings) {
+    if (rings.empty()) return std::nullopt;
     // each ring's angles unwrapped along it: a ring must come back to its first angle
     std::vector<std::vector<Point2>> unwrapped;
     std::vector<double> areas;
@@ -260,12 +260,25 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
     auto triangles = triangulateRings(unrolledRings);
     if (!triangles) return std::nullopt;
     narrowBySpan(*triangles, unrolled, angles);
+    UnrolledTriangles result;
     for (const auto& t : *triangles) {
         const double span = std::max({angles[t[0]], angles[t[1]], angles[t[2]]}) -
                             std::min({angles[t[0]], angles[t[1]], angles[t[2]]});
-        if (!(unrolledTriangleBound(frame.radius, span) <= surfaceShare)) return std::nullopt;
+        result.bounds.push_back(unrolledTriangleBound(frame.radius, span));
     }
-    return triangles;
+    result.triangles = std::move(*triangles);
+    return result;
+}
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
+    const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings,
+    double surfaceShare) {
+    if (!(surfaceShare > 0)) return std::nullopt;
+    auto unrolled = triangulateUnrolled(frame, rings);
+    if (!unrolled) return std::nullopt;
+    for (const double bound : unrolled->bounds)
+        if (!(bound <= surfaceShare)) return std::nullopt;
+    return std::move(unrolled->triangles);
 }
 
 }  // namespace nurbslod

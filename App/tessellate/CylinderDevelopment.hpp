@@ -37,15 +37,23 @@ std::optional<CylinderFrame> faceCylinderFrame(const BSplineSurface& surface,
 double unrolledTriangleBound(double radius, double angle);
 
 // Triangles over rings of points of a face on a cylinder (its trimming loops' points, in the
-// loops' order), made in the cylinder's unrolled plane (radius times the angle, height): none
-// where the rings do not unroll (a ring that winds about the axis, a hole whose turn of the
-// unrolled plane is not clear, a step of more than a quarter turn between two points), do not
-// make a valid polygon with holes there, or where a triangle's bound (unrolledTriangleBound,
-// after edge flips that narrow the widest triangles) exceeds `surfaceShare`. Each triangle holds
-// three indices into the concatenation of the rings, counter-clockwise about du x dv. Triangles
-// made so tile the unrolled polygon of the rings' chords, which the cylinder maps onto the face
-// less the slivers between its trimming curves and their chords, as a kd-tree cell's triangles
-// do within their cell's bound.
+// loops' order), made in the cylinder's unrolled plane (radius times the angle, height), then
+// flipped to narrow the widest; each with its bound (unrolledTriangleBound of the angle its
+// corners span). Each triangle holds three indices into the concatenation of the rings,
+// counter-clockwise about du x dv. None where the rings do not unroll (a ring that winds about
+// the axis, a hole whose turn of the unrolled plane is not clear, a step of more than a quarter
+// turn between two points) or do not make a valid polygon with holes there. Triangles made so
+// tile the unrolled polygon of the rings' chords, which the cylinder maps onto the face less the
+// slivers between its trimming curves and their chords, as a kd-tree cell's triangles do within
+// their cell's bound.
+struct UnrolledTriangles {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<double> bounds;
+};
+std::optional<UnrolledTriangles> triangulateUnrolled(const CylinderFrame& frame,
+                                                     const std::vector<std::vector<Point3>>& rings);
+
+// The triangles of triangulateUnrolled where every bound is within `surfaceShare`; none else.
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare);
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -560,14 +561,123 @@ FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& 
 
 FaceTessellator::~FaceTessellator() = default;
 
-std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::developedTriangles(
-    const std::vector<std::vector<Point3>>& positions) const {
-    if (plane_) return triangulateInPlane(*plane_, positions);
+double FaceTessellator::unrolledShare() const {
     // A trimmed cell's share for every triangle (each may have a chord for a side), less twice
     // the flatness that faceCylinderFrame allowed: the corners lie on the NURBS form, which may
     // be that far from the cylinder that the bound is for, and so may the surface under them.
-    if (cylinder_) return triangulateOnCylinder(*cylinder_, positions, 0.9 * budget_.surface);
+    return 0.9 * budget_.surface;
+}
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::developedTriangles(
+    const std::vector<std::vector<Point3>>& positions) const {
+    if (plane_) return triangulateInPlane(*plane_, positions);
+    if (cylinder_) return triangulateOnCylinder(*cylinder_, positions, unrolledShare());
     return std::nullopt;
+}
+
+std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
+    const std::vector<BoundaryLoop>& loops) const {
+    if (!cylinder_) return std::nullopt;
+    const double share = unrolledShare();
+    // Points put on the chords, as a kd-tree cell's side would cut them (ModelTessellator puts
+    // a cut on the 3D chord): the bound holds for triangles with such corners too, their
+    // distance from the surface being the chord's, which the trimming share covers. Per loop and
+    // segment, the fractions along it (in the loop's direction).
+    std::vector<std::vector<std::vector<double>>> added(loops.size());
+    std::size_t points = 0, addedCount = 0;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+        added[l].resize(loops[l].points.size());
+        points += loops[l].points.size();
+    }
+    struct Source {
+        std::size_t loop, segment;
+        double t;  // 0 for the segment's first point
+    };
+    // Each round halves the chord pieces at the corners of the triangles over the bound, until
+    // none is; a dozen rounds halve a piece 4,096 times.
+    for (int round = 0; round < 12; ++round) {
+        std::vector<std::vector<Point3>> rings;
+        std::vector<Source> sources;
+        std::vector<std::size_t> ringStart;
+        for (std::size_t l = 0; l < loops.size(); ++l) {
+            const auto& loopPoints = loops[l].points;
+            const std::size_t n = loopPoints.size();
+            ringStart.push_back(sources.size());
+            rings.emplace_back();
+            for (std::size_t i = 0; i < n; ++i) {
+                const Point2& a = loopPoints[i].uv;
+                const Point2& b = loopPoints[(i + 1) % n].uv;
+                const Point3 first = face_.surface.point(a.x(), a.y());
+                rings.back().push_back(first);
+                sources.push_back({l, i, 0});
+                if (added[l][i].empty()) continue;
+                const Point3 second = face_.surface.point(b.x(), b.y());
+                for (const double t : added[l][i]) {
+                    rings.back().push_back((1 - t) * first + t * second);
+                    sources.push_back({l, i, t});
+                }
+            }
+        }
+        const auto unrolled = triangulateUnrolled(*cylinder_, rings);
+        if (!unrolled) return std::nullopt;
+        // the ring sides from concatenated index k to the next point of its ring, and to it
+        // from the one before
+        auto endOf = [&](std::size_t k) {
+            const std::size_t ring = sources[k].loop;
+            return ring + 1 < ringStart.size() ? ringStart[ring + 1] : sources.size();
+        };
+        auto nextOf = [&](std::size_t k) {
+            return k + 1 < endOf(k) ? k + 1 : ringStart[sources[k].loop];
+        };
+        auto previousOf = [&](std::size_t k) {
+            return k > ringStart[sources[k].loop] ? k - 1 : endOf(k) - 1;
+        };
+        std::vector<std::vector<std::vector<double>>> halves(loops.size());
+        for (std::size_t l = 0; l < loops.size(); ++l) halves[l].resize(loops[l].points.size());
+        bool over = false;
+        for (std::size_t t = 0; t < unrolled->triangles.size(); ++t) {
+            if (unrolled->bounds[t] <= share) continue;
+            over = true;
+            for (const std::uint32_t corner : unrolled->triangles[t]) {
+                // the sides before and after the corner along its ring
+                for (const std::size_t k : {previousOf(corner), std::size_t(corner)}) {
+                    const Source& from = sources[k];
+                    const Source& to = sources[nextOf(k)];
+                    const double end = to.segment == from.segment && to.t > from.t ? to.t : 1.0;
+                    halves[from.loop][from.segment].push_back(0.5 * (from.t + end));
+                }
+            }
+        }
+        if (!over) break;
+        for (std::size_t l = 0; l < loops.size(); ++l)
+            for (std::size_t i = 0; i < halves[l].size(); ++i) {
+                auto& list = added[l][i];
+                for (const double t : halves[l][i])
+                    if (std::find(list.begin(), list.end(), t) == list.end()) {
+                        list.push_back(t);
+                        ++addedCount;
+                    }
+                std::sort(list.begin(), list.end());
+            }
+        // more points than the loops had: the kd-tree's cells will do better
+        if (addedCount > points || round == 11) return std::nullopt;
+    }
+    std::vector<BoundaryCrossing> crossings;
+    for (std::size_t l = 0; l < loops.size(); ++l)
+        for (std::size_t i = 0; i < added[l].size(); ++i) {
+            if (added[l][i].empty()) continue;
+            const BoundarySegmentOrigin& origin = loops[l].origins[i];
+            if (origin.edge < 0) return std::nullopt;
+            const Point2& a = loops[l].points[i].uv;
+            const Point2& b = loops[l].points[(i + 1) % loops[l].points.size()].uv;
+            for (const double t : added[l][i]) {
+                const IntPoint q = frame_->toInteger((1 - t) * a + t * b);
+                crossings.push_back({origin.edge, origin.segment, origin.use,
+                                     origin.forward ? t : 1 - t, std::clamp<cInt>(q.X, 0, kScale),
+                                     std::clamp<cInt>(q.Y, 0, kScale)});
+            }
+        }
+    return crossings;
 }
 
 void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
@@ -1205,10 +1315,20 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // A face in a plane whose loops make one polygon there takes no kd-tree: triangulate makes
     // its triangles in the plane, and no cell side cuts its chords (the loops' points are its
     // surface's at their (u, v) here, within the share gap of the points it gets).
-    if (plane_ || cylinder_) {
+    if (plane_) {
         if (developedTriangles(ringsInSpace(loops, [&](const BoundaryPoint& bp) {
                 return face_.surface.point(bp.uv.x(), bp.uv.y());
             }))) {
+            leaves_.clear();
+            return {};
+        }
+    }
+    // A face on a cylinder whose unrolled triangles keep the bound over its loops' points takes
+    // them. One that needs points on its chords for that compares them with the kd-tree's, below.
+    std::optional<std::vector<BoundaryCrossing>> unrolled;
+    if (cylinder_) {
+        unrolled = unrolledCrossings(loops);
+        if (unrolled && unrolled->empty()) {
             leaves_.clear();
             return {};
         }
@@ -1244,6 +1364,22 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                                              origin.forward ? t : 1 - t, p.X, p.Y});
                     }
         });
+    if (unrolled) {
+        // Triangles over a polygon of b points on its boundary and i inside: b + 2 i - 2. The
+        // unrolled ones have the loops' points and the added ones; the kd-tree's the loops'
+        // points, its crossings, and at least the corners of its cells inside the region
+        // (those of cells the boundary does not touch).
+        std::unordered_set<std::int64_t> inside;
+        for (const auto& leaf : leaves_)
+            if (leaf.leaf && leaf.full)
+                for (const IntPoint& corner : leaf.rect.path())
+                    if (!index.corners.count(keyOf(corner.X, corner.Y)))
+                        inside.insert(keyOf(corner.X, corner.Y));
+        if (unrolled->size() < crossings.size() + 2 * inside.size()) {
+            leaves_.clear();
+            return std::move(*unrolled);
+        }
+    }
     return crossings;
 }
 

@@ -105,6 +105,13 @@ private:
     // within the bounds.
     std::optional<std::vector<std::array<std::uint32_t, 3>>> developedTriangles(
         const std::vector<std::vector<Point3>>& positions) const;
+    // What a triangle of a face on a cylinder may spend (its unrolled bound)
+    double unrolledShare() const;
+    // The points a face on a cylinder needs on its boundary chords for its unrolled triangles to
+    // keep the bound (none where they already do); nothing where that takes too many points, or
+    // the loops do not unroll.
+    std::optional<std::vector<BoundaryCrossing>> unrolledCrossings(
+        const std::vector<BoundaryLoop>& loops) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;
