@@ -576,18 +576,21 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::develo
 }
 
 std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
-    const std::vector<BoundaryLoop>& loops) const {
-    if (!cylinder_) return std::nullopt;
+    const std::vector<BoundaryLoop>& loops, std::size_t fewerThan) const {
+    if (!cylinder_ || fewerThan == 0) return std::nullopt;
     const double share = unrolledShare();
     // Points put on the chords, as a kd-tree cell's side would cut them (ModelTessellator puts
     // a cut on the 3D chord): the bound holds for triangles with such corners too, their
     // distance from the surface being the chord's, which the trimming share covers. Per loop and
     // segment, the fractions along it (in the loop's direction).
     std::vector<std::vector<std::vector<double>>> added(loops.size());
-    std::size_t points = 0, addedCount = 0;
+    std::size_t addedCount = 0;
+    // the loops' points on the surface, evaluated once for every round
+    std::vector<std::vector<Point3>> onSurface(loops.size());
     for (std::size_t l = 0; l < loops.size(); ++l) {
         added[l].resize(loops[l].points.size());
-        points += loops[l].points.size();
+        for (const auto& bp : loops[l].points)
+            onSurface[l].push_back(face_.surface.point(bp.uv.x(), bp.uv.y()));
     }
     struct Source {
         std::size_t loop, segment;
@@ -605,13 +608,11 @@ std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
             ringStart.push_back(sources.size());
             rings.emplace_back();
             for (std::size_t i = 0; i < n; ++i) {
-                const Point2& a = loopPoints[i].uv;
-                const Point2& b = loopPoints[(i + 1) % n].uv;
-                const Point3 first = face_.surface.point(a.x(), a.y());
+                const Point3& first = onSurface[l][i];
                 rings.back().push_back(first);
                 sources.push_back({l, i, 0});
                 if (added[l][i].empty()) continue;
-                const Point3 second = face_.surface.point(b.x(), b.y());
+                const Point3& second = onSurface[l][(i + 1) % n];
                 for (const double t : added[l][i]) {
                     rings.back().push_back((1 - t) * first + t * second);
                     sources.push_back({l, i, t});
@@ -659,8 +660,7 @@ std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
                     }
                 std::sort(list.begin(), list.end());
             }
-        // more points than the loops had: the kd-tree's cells will do better
-        if (addedCount > points || round == 11) return std::nullopt;
+        if (addedCount >= fewerThan || round == 11) return std::nullopt;
     }
     std::vector<BoundaryCrossing> crossings;
     for (std::size_t l = 0; l < loops.size(); ++l)
@@ -1324,14 +1324,11 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
         }
     }
     // A face on a cylinder whose unrolled triangles keep the bound over its loops' points takes
-    // them. One that needs points on its chords for that compares them with the kd-tree's, below.
-    std::optional<std::vector<BoundaryCrossing>> unrolled;
-    if (cylinder_) {
-        unrolled = unrolledCrossings(loops);
-        if (unrolled && unrolled->empty()) {
-            leaves_.clear();
-            return {};
-        }
+    // them. One that needs points on its chords for that asks for them where they are fewer
+    // than the kd-tree's, below.
+    if (cylinder_ && unrolledCrossings(loops, 1)) {
+        leaves_.clear();
+        return {};
     }
     buildLeaves(region, simpleRegion);
 
@@ -1364,7 +1361,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                                              origin.forward ? t : 1 - t, p.X, p.Y});
                     }
         });
-    if (unrolled) {
+    if (cylinder_) {
         // Triangles over a polygon of b points on its boundary and i inside: b + 2 i - 2. The
         // unrolled ones have the loops' points and the added ones; the kd-tree's the loops'
         // points, its crossings, and at least the corners of its cells inside the region
@@ -1375,7 +1372,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                 for (const IntPoint& corner : leaf.rect.path())
                     if (!index.corners.count(keyOf(corner.X, corner.Y)))
                         inside.insert(keyOf(corner.X, corner.Y));
-        if (unrolled->size() < crossings.size() + 2 * inside.size()) {
+        if (auto unrolled = unrolledCrossings(loops, crossings.size() + 2 * inside.size())) {
             leaves_.clear();
             return std::move(*unrolled);
         }
