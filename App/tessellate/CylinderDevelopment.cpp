@@ -270,6 +270,80 @@ std::optional<UnrolledTriangles> triangulateUnrolled(
     return result;
 }
 
+std::optional<ChordFractions> chordPointsForUnrolledBound(
+    const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare,
+    std::size_t fewerThan) {
+    if (fewerThan == 0 || !(surfaceShare > 0)) return std::nullopt;
+    ChordFractions added(rings.size());
+    for (std::size_t r = 0; r < rings.size(); ++r) added[r].resize(rings[r].size());
+    std::size_t addedCount = 0;
+    // where each point of a round's rings comes from: its ring's side and fraction along it
+    struct Source {
+        std::size_t ring, side;
+        double t;  // 0 for the side's first point
+    };
+    for (int round = 0; round < 12; ++round) {
+        std::vector<std::vector<Point3>> withAdded;
+        std::vector<Source> sources;
+        std::vector<std::size_t> ringStart;
+        for (std::size_t r = 0; r < rings.size(); ++r) {
+            const std::size_t n = rings[r].size();
+            ringStart.push_back(sources.size());
+            withAdded.emplace_back();
+            for (std::size_t i = 0; i < n; ++i) {
+                const Point3& first = rings[r][i];
+                withAdded.back().push_back(first);
+                sources.push_back({r, i, 0});
+                const Point3& second = rings[r][(i + 1) % n];
+                for (const double t : added[r][i]) {
+                    withAdded.back().push_back((1 - t) * first + t * second);
+                    sources.push_back({r, i, t});
+                }
+            }
+        }
+        const auto unrolled = triangulateUnrolled(frame, withAdded);
+        if (!unrolled) return std::nullopt;
+        // the sides of the round's rings from point k to the next, and to k from the one before
+        auto endOf = [&](std::size_t k) {
+            const std::size_t ring = sources[k].ring;
+            return ring + 1 < ringStart.size() ? ringStart[ring + 1] : sources.size();
+        };
+        auto nextOf = [&](std::size_t k) {
+            return k + 1 < endOf(k) ? k + 1 : ringStart[sources[k].ring];
+        };
+        auto previousOf = [&](std::size_t k) {
+            return k > ringStart[sources[k].ring] ? k - 1 : endOf(k) - 1;
+        };
+        ChordFractions halves(rings.size());
+        for (std::size_t r = 0; r < rings.size(); ++r) halves[r].resize(rings[r].size());
+        bool over = false;
+        for (std::size_t t = 0; t < unrolled->triangles.size(); ++t) {
+            if (unrolled->bounds[t] <= surfaceShare) continue;
+            over = true;
+            for (const std::uint32_t corner : unrolled->triangles[t])
+                for (const std::size_t k : {previousOf(corner), std::size_t(corner)}) {
+                    const Source& from = sources[k];
+                    const Source& to = sources[nextOf(k)];
+                    const double end = to.side == from.side && to.t > from.t ? to.t : 1.0;
+                    halves[from.ring][from.side].push_back(0.5 * (from.t + end));
+                }
+        }
+        if (!over) return added;
+        for (std::size_t r = 0; r < rings.size(); ++r)
+            for (std::size_t i = 0; i < halves[r].size(); ++i) {
+                auto& list = added[r][i];
+                for (const double t : halves[r][i])
+                    if (std::find(list.begin(), list.end(), t) == list.end()) {
+                        list.push_back(t);
+                        ++addedCount;
+                    }
+                std::sort(list.begin(), list.end());
+            }
+        if (addedCount >= fewerThan) return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings,
     double surfaceShare) {

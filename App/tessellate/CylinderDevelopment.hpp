@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -52,6 +53,20 @@ struct UnrolledTriangles {
 };
 std::optional<UnrolledTriangles> triangulateUnrolled(const CylinderFrame& frame,
                                                      const std::vector<std::vector<Point3>>& rings);
+
+// Points on the rings' chords that let every unrolled triangle keep `surfaceShare`: per ring and
+// side (from point i to point i + 1), the fractions along the chord, increasing; all empty where
+// the rings' points already do. Each round halves the chord pieces at the corners of the
+// triangles over the bound, until none is. None where the rings do not unroll, or where that
+// takes `fewerThan` points or more (a dozen rounds at most).
+//
+// A point on a chord is off the cylinder by the chord's distance from its curve, which the
+// face's trimming share covers, as it does for the points a kd-tree cell's side cuts on a chord:
+// a triangle with such a corner is within its unrolled bound of the cylinder plus that distance.
+using ChordFractions = std::vector<std::vector<std::vector<double>>>;
+std::optional<ChordFractions> chordPointsForUnrolledBound(
+    const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare,
+    std::size_t fewerThan);
 
 // The triangles of triangulateUnrolled where every bound is within `surfaceShare`; none else.
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(

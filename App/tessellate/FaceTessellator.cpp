@@ -577,100 +577,22 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::develo
 
 std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
     const std::vector<BoundaryLoop>& loops, std::size_t fewerThan) const {
-    if (!cylinder_ || fewerThan == 0) return std::nullopt;
-    const double share = unrolledShare();
-    // Points put on the chords, as a kd-tree cell's side would cut them (ModelTessellator puts
-    // a cut on the 3D chord): the bound holds for triangles with such corners too, their
-    // distance from the surface being the chord's, which the trimming share covers. Per loop and
-    // segment, the fractions along it (in the loop's direction).
-    std::vector<std::vector<std::vector<double>>> added(loops.size());
-    std::size_t addedCount = 0;
-    // the loops' points on the surface, evaluated once for every round
-    std::vector<std::vector<Point3>> onSurface(loops.size());
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-        added[l].resize(loops[l].points.size());
-        for (const auto& bp : loops[l].points)
-            onSurface[l].push_back(face_.surface.point(bp.uv.x(), bp.uv.y()));
-    }
-    struct Source {
-        std::size_t loop, segment;
-        double t;  // 0 for the segment's first point
-    };
-    // Each round halves the chord pieces at the corners of the triangles over the bound, until
-    // none is; a dozen rounds halve a piece 4,096 times.
-    for (int round = 0; round < 12; ++round) {
-        std::vector<std::vector<Point3>> rings;
-        std::vector<Source> sources;
-        std::vector<std::size_t> ringStart;
-        for (std::size_t l = 0; l < loops.size(); ++l) {
-            const auto& loopPoints = loops[l].points;
-            const std::size_t n = loopPoints.size();
-            ringStart.push_back(sources.size());
-            rings.emplace_back();
-            for (std::size_t i = 0; i < n; ++i) {
-                const Point3& first = onSurface[l][i];
-                rings.back().push_back(first);
-                sources.push_back({l, i, 0});
-                if (added[l][i].empty()) continue;
-                const Point3& second = onSurface[l][(i + 1) % n];
-                for (const double t : added[l][i]) {
-                    rings.back().push_back((1 - t) * first + t * second);
-                    sources.push_back({l, i, t});
-                }
-            }
-        }
-        const auto unrolled = triangulateUnrolled(*cylinder_, rings);
-        if (!unrolled) return std::nullopt;
-        // the ring sides from concatenated index k to the next point of its ring, and to it
-        // from the one before
-        auto endOf = [&](std::size_t k) {
-            const std::size_t ring = sources[k].loop;
-            return ring + 1 < ringStart.size() ? ringStart[ring + 1] : sources.size();
-        };
-        auto nextOf = [&](std::size_t k) {
-            return k + 1 < endOf(k) ? k + 1 : ringStart[sources[k].loop];
-        };
-        auto previousOf = [&](std::size_t k) {
-            return k > ringStart[sources[k].loop] ? k - 1 : endOf(k) - 1;
-        };
-        std::vector<std::vector<std::vector<double>>> halves(loops.size());
-        for (std::size_t l = 0; l < loops.size(); ++l) halves[l].resize(loops[l].points.size());
-        bool over = false;
-        for (std::size_t t = 0; t < unrolled->triangles.size(); ++t) {
-            if (unrolled->bounds[t] <= share) continue;
-            over = true;
-            for (const std::uint32_t corner : unrolled->triangles[t]) {
-                // the sides before and after the corner along its ring
-                for (const std::size_t k : {previousOf(corner), std::size_t(corner)}) {
-                    const Source& from = sources[k];
-                    const Source& to = sources[nextOf(k)];
-                    const double end = to.segment == from.segment && to.t > from.t ? to.t : 1.0;
-                    halves[from.loop][from.segment].push_back(0.5 * (from.t + end));
-                }
-            }
-        }
-        if (!over) break;
-        for (std::size_t l = 0; l < loops.size(); ++l)
-            for (std::size_t i = 0; i < halves[l].size(); ++i) {
-                auto& list = added[l][i];
-                for (const double t : halves[l][i])
-                    if (std::find(list.begin(), list.end(), t) == list.end()) {
-                        list.push_back(t);
-                        ++addedCount;
-                    }
-                std::sort(list.begin(), list.end());
-            }
-        if (addedCount >= fewerThan || round == 11) return std::nullopt;
-    }
+    if (!cylinder_) return std::nullopt;
+    const auto rings = ringsInSpace(
+        loops, [&](const BoundaryPoint& bp) { return face_.surface.point(bp.uv.x(), bp.uv.y()); });
+    const auto added = chordPointsForUnrolledBound(*cylinder_, rings, unrolledShare(), fewerThan);
+    if (!added) return std::nullopt;
+    // each point a cut of its edge's chord, as a kd-tree cell's side makes one (ModelTessellator
+    // puts it on the 3D chord, where the fraction put it)
     std::vector<BoundaryCrossing> crossings;
     for (std::size_t l = 0; l < loops.size(); ++l)
-        for (std::size_t i = 0; i < added[l].size(); ++i) {
-            if (added[l][i].empty()) continue;
+        for (std::size_t i = 0; i < (*added)[l].size(); ++i) {
+            if ((*added)[l][i].empty()) continue;
             const BoundarySegmentOrigin& origin = loops[l].origins[i];
             if (origin.edge < 0) return std::nullopt;
             const Point2& a = loops[l].points[i].uv;
             const Point2& b = loops[l].points[(i + 1) % loops[l].points.size()].uv;
-            for (const double t : added[l][i]) {
+            for (const double t : (*added)[l][i]) {
                 const IntPoint q = frame_->toInteger((1 - t) * a + t * b);
                 crossings.push_back({origin.edge, origin.segment, origin.use,
                                      origin.forward ? t : 1 - t, std::clamp<cInt>(q.X, 0, kScale),
@@ -1326,9 +1248,16 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // A face on a cylinder whose unrolled triangles keep the bound over its loops' points takes
     // them. One that needs points on its chords for that asks for them where they are fewer
     // than the kd-tree's, below.
-    if (cylinder_ && unrolledCrossings(loops, 1)) {
-        leaves_.clear();
-        return {};
+    std::optional<std::vector<BoundaryCrossing>> unrolled;
+    if (cylinder_) {
+        // as many points as the loops have at most: past that the kd-tree's cells would do
+        std::size_t points = 0;
+        for (const auto& loop : loops) points += loop.points.size();
+        unrolled = unrolledCrossings(loops, points);
+        if (unrolled && unrolled->empty()) {
+            leaves_.clear();
+            return {};
+        }
     }
     buildLeaves(region, simpleRegion);
 
@@ -1361,7 +1290,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                                              origin.forward ? t : 1 - t, p.X, p.Y});
                     }
         });
-    if (cylinder_) {
+    if (unrolled) {
         // Triangles over a polygon of b points on its boundary and i inside: b + 2 i - 2. The
         // unrolled ones have the loops' points and the added ones; the kd-tree's the loops'
         // points, its crossings, and at least the corners of its cells inside the region
@@ -1372,7 +1301,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                 for (const IntPoint& corner : leaf.rect.path())
                     if (!index.corners.count(keyOf(corner.X, corner.Y)))
                         inside.insert(keyOf(corner.X, corner.Y));
-        if (auto unrolled = unrolledCrossings(loops, crossings.size() + 2 * inside.size())) {
+        if (unrolled && unrolled->size() < crossings.size() + 2 * inside.size()) {
             leaves_.clear();
             return std::move(*unrolled);
         }
