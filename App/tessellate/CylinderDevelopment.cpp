@@ -208,7 +208,10 @@ std::optional<UnrolledTriangles> triangulateUnrolled(
             const double raw = at.x();
             if (!points.empty()) {
                 const double step = wrapped(raw - previous);
-                if (!(std::abs(step) <= 0.5 * kPi)) return std::nullopt;
+                // a step near half a turn could unwrap either way; up to three eighths it is
+                // clear (a quarter was too tight: a quarter cylinder's two chords of exactly a
+                // quarter turn passed with the surface's points and failed with the shared ones)
+                if (!(std::abs(step) <= 0.75 * kPi)) return std::nullopt;
                 at.x() = points.back().x() + step;
             }
             previous = raw;

@@ -42,11 +42,11 @@ double unrolledTriangleBound(double radius, double angle);
 // flipped to narrow the widest; each with its bound (unrolledTriangleBound of the angle its
 // corners span). Each triangle holds three indices into the concatenation of the rings,
 // counter-clockwise about du x dv. None where the rings do not unroll (a ring that winds about
-// the axis, a hole whose turn of the unrolled plane is not clear, a step of more than a quarter
-// turn between two points) or do not make a valid polygon with holes there. Triangles made so
-// tile the unrolled polygon of the rings' chords, which the cylinder maps onto the face less the
-// slivers between its trimming curves and their chords, as a kd-tree cell's triangles do within
-// their cell's bound.
+// the axis, a hole whose turn of the unrolled plane is not clear, a step of more than three
+// eighths of a turn between two points) or do not make a valid polygon with holes there. Triangles
+// made so tile the unrolled polygon of the rings' chords, which the cylinder maps onto the face
+// less the slivers between its trimming curves and their chords, as a kd-tree cell's triangles do
+// within their cell's bound.
 struct UnrolledTriangles {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<double> bounds;

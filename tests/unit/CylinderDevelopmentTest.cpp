@@ -126,7 +126,7 @@ TEST(CylinderDevelopment, HelicalStripTakesNarrowTriangles) {
 }
 
 // None where the share is below what the points allow, where a ring winds about the axis, or
-// where two points are more than a quarter turn apart.
+// where two points are more than three eighths of a turn apart.
 TEST(CylinderDevelopment, RefusesWhatItCannotBound) {
     const double radius = 7.5;
     const int perTurn = 96;
@@ -144,10 +144,13 @@ TEST(CylinderDevelopment, RefusesWhatItCannotBound) {
     std::vector<Point3> circle;
     for (int i = 0; i < perTurn; ++i) circle.push_back(onCylinder(radius, i * step, 0));
     EXPECT_FALSE(triangulateOnCylinder(zFrame(radius), {circle}, 1.0));
-    // a square of four points a quarter turn and more apart
-    const std::vector<Point3> square{onCylinder(radius, 0, 0), onCylinder(radius, 2, 0),
-                                     onCylinder(radius, 2, 1), onCylinder(radius, 0, 1)};
+    // a square of four points more than three eighths of a turn apart, and one within that
+    const std::vector<Point3> square{onCylinder(radius, 0, 0), onCylinder(radius, 2.5, 0),
+                                     onCylinder(radius, 2.5, 1), onCylinder(radius, 0, 1)};
     EXPECT_FALSE(triangulateOnCylinder(zFrame(radius), {square}, 100.0));
+    const std::vector<Point3> quarter{onCylinder(radius, 0, 0), onCylinder(radius, 0.5 * kPi, 0),
+                                      onCylinder(radius, 0.5 * kPi, 1), onCylinder(radius, 0, 1)};
+    EXPECT_TRUE(triangulateOnCylinder(zFrame(radius), {quarter}, 100.0));
     // a point that is not a number
     std::vector<Point3> broken = ring;
     broken[5].x() = std::nan("");
