@@ -14,9 +14,12 @@
 #include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 #include <numbers>
+#include <optional>
 #include <set>
+#include <string>
 #include <vector>
 
+#include "VerifiedLargestFace.hpp"
 #include "geometry/BSplineSurface.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
@@ -191,15 +194,23 @@ std::array<std::size_t, 2> faceTrianglesUnrolledAndNot(Model model, const TopoDS
     std::array<std::size_t, 2> onFace{0, 0};
     for (int k = 0; k < 2; ++k) {
         const TessellationResult& result = k == 0 ? unrolled : kdTree;
-        EXPECT_TRUE(result.failures.empty());
-        const auto report = occ::verifyMesh(shape, result.mesh, tolerance);
-        EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-        EXPECT_LE(report.maxDev, tolerance);
-        EXPECT_LE(report.maxCover, tolerance);
-        EXPECT_EQ(report.openEdges, 0u);
+        test::expectVerified(shape, result, tolerance);
         for (const auto f : result.mesh.triangleFaces) onFace[k] += f == face;
     }
     return onFace;
+}
+
+// The same for face `face` of the corpus model `name` at relative 1e-4, once the face is checked
+// to be on a cylinder; none where the corpus is not there.
+std::optional<std::array<std::size_t, 2>> corpusFaceTrianglesUnrolledAndNot(const std::string& name,
+                                                                            int face) {
+    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / name;
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    const TopoDS_Shape shape = occ::readShape(path.string());
+    const Model model = occ::importModel(shape);
+    EXPECT_GE(model.faces.size(), static_cast<std::size_t>(face));
+    EXPECT_TRUE(model.faces.at(face - 1).cylinder);
+    return faceTrianglesUnrolledAndNot(model, shape, 1e-4 * model.boundingBoxDiagonal, face);
 }
 
 // A cylinder cut by two slanted planes close together: its side is a narrow band between two
@@ -243,14 +254,9 @@ TEST(CylinderDevelopment, SlantedBandIsOneZigzagWithinTheTolerance) {
 // points on those chords, where a kd-tree's cells cut 15: 33 triangles on it instead of 41
 // (BRepMesh 22, at 0.5 T).
 TEST(CylinderDevelopment, QuarterCylinderAsksForAFewChordPoints) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "bug33398.step";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    ASSERT_GE(model.faces.size(), 78u);
-    ASSERT_TRUE(model.faces[77].cylinder);
-    const auto [unrolled, kdTree] =
-        faceTrianglesUnrolledAndNot(model, shape, 1e-4 * model.boundingBoxDiagonal, 78);
+    const auto triangles = corpusFaceTrianglesUnrolledAndNot("bug33398.step", 78);
+    if (!triangles) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    const auto [unrolled, kdTree] = *triangles;
     EXPECT_LT(double(unrolled), 0.85 * double(kdTree)) << unrolled << " vs " << kdTree;
 }
 
@@ -259,14 +265,9 @@ TEST(CylinderDevelopment, QuarterCylinderAsksForAFewChordPoints) {
 // cell sides that crosses the strip adds a point to both helices, which the flanks then fan to:
 // at relative 1e-4, 688 triangles on it instead of 905.
 TEST(CylinderDevelopment, BottleThreadTopTakesFewerTriangles) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "bottle.brep";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    ASSERT_GE(model.faces.size(), 6u);
-    ASSERT_TRUE(model.faces[5].cylinder);
-    const auto [unrolled, kdTree] =
-        faceTrianglesUnrolledAndNot(model, shape, 1e-4 * model.boundingBoxDiagonal, 6);
+    const auto triangles = corpusFaceTrianglesUnrolledAndNot("bottle.brep", 6);
+    if (!triangles) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    const auto [unrolled, kdTree] = *triangles;
     EXPECT_LT(double(unrolled), 0.8 * double(kdTree)) << unrolled << " vs " << kdTree;
 }
 

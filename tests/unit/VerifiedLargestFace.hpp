@@ -13,6 +13,18 @@
 
 namespace nurbslod::test {
 
+// Checks that no face of `result` failed and that `nurbslod verify`'s measure of its mesh
+// against `shape` passes both ways within `tolerance` with no open edge.
+inline void expectVerified(const TopoDS_Shape& shape, const TessellationResult& result,
+                           double tolerance) {
+    EXPECT_TRUE(result.failures.empty());
+    const auto report = occ::verifyMesh(shape, result.mesh, tolerance);
+    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
+    EXPECT_LE(report.maxDev, tolerance);
+    EXPECT_LE(report.maxCover, tolerance);
+    EXPECT_EQ(report.openEdges, 0u);
+}
+
 // Tessellates `shape` at `tolerance` in guaranteed mode, checks that it has `faceCount` faces,
 // that none failed and that `nurbslod verify`'s measure passes both ways with no open edge,
 // and returns the triangles of its face with the most.
@@ -23,12 +35,7 @@ inline std::size_t verifiedLargestFaceTriangles(const TopoDS_Shape& shape, doubl
     const Model model = occ::importModel(shape);
     EXPECT_EQ(model.faces.size(), faceCount);
     const TessellationResult result = tessellateModel(model, options);
-    EXPECT_TRUE(result.failures.empty());
-    const auto report = occ::verifyMesh(shape, result.mesh, tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_LE(report.maxDev, tolerance);
-    EXPECT_LE(report.maxCover, tolerance);
-    EXPECT_EQ(report.openEdges, 0u);
+    expectVerified(shape, result, tolerance);
     std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
     for (const auto face : result.mesh.triangleFaces) ++perFace.at(face);
     return *std::max_element(perFace.begin(), perFace.end());
