@@ -275,7 +275,7 @@ std::optional<UnrolledTriangles> triangulateUnrolled(
 
 std::optional<ChordFractions> chordPointsForUnrolledBound(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare,
-    std::size_t fewerThan) {
+    std::size_t fewerThan, const UnrolledTriangles* first) {
     if (fewerThan == 0 || !(surfaceShare > 0)) return std::nullopt;
     ChordFractions added(rings.size());
     for (std::size_t r = 0; r < rings.size(); ++r) added[r].resize(rings[r].size());
@@ -304,7 +304,8 @@ std::optional<ChordFractions> chordPointsForUnrolledBound(
                 }
             }
         }
-        const auto unrolled = triangulateUnrolled(frame, withAdded);
+        const auto unrolled =
+            round == 0 && first ? std::optional(*first) : triangulateUnrolled(frame, withAdded);
         if (!unrolled) return std::nullopt;
         // the sides of the round's rings from point k to the next, and to k from the one before
         auto endOf = [&](std::size_t k) {

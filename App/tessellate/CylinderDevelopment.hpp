@@ -58,7 +58,8 @@ std::optional<UnrolledTriangles> triangulateUnrolled(const CylinderFrame& frame,
 // side (from point i to point i + 1), the fractions along the chord, increasing; all empty where
 // the rings' points already do. Each round halves the chord pieces at the corners of the
 // triangles over the bound, until none is. None where the rings do not unroll, or where that
-// takes `fewerThan` points or more (a dozen rounds at most).
+// takes `fewerThan` points or more (a dozen rounds at most). `first`, where given, is
+// triangulateUnrolled of the rings themselves, which the first round then takes.
 //
 // A point on a chord is off the cylinder by the chord's distance from its curve, which the
 // face's trimming share covers, as it does for the points a kd-tree cell's side cuts on a chord:
@@ -66,7 +67,7 @@ std::optional<UnrolledTriangles> triangulateUnrolled(const CylinderFrame& frame,
 using ChordFractions = std::vector<std::vector<std::vector<double>>>;
 std::optional<ChordFractions> chordPointsForUnrolledBound(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare,
-    std::size_t fewerThan);
+    std::size_t fewerThan, const UnrolledTriangles* first = nullptr);
 
 // The triangles of triangulateUnrolled where every bound is within `surfaceShare`; none else.
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(

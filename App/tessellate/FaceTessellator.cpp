@@ -576,11 +576,11 @@ std::optional<std::vector<std::array<std::uint32_t, 3>>> FaceTessellator::develo
 }
 
 std::optional<std::vector<BoundaryCrossing>> FaceTessellator::unrolledCrossings(
-    const std::vector<BoundaryLoop>& loops, std::size_t fewerThan) const {
+    const std::vector<BoundaryLoop>& loops, const std::vector<std::vector<Point3>>& rings,
+    const UnrolledTriangles& first, std::size_t fewerThan) const {
     if (!cylinder_) return std::nullopt;
-    const auto rings = ringsInSpace(
-        loops, [&](const BoundaryPoint& bp) { return face_.surface.point(bp.uv.x(), bp.uv.y()); });
-    const auto added = chordPointsForUnrolledBound(*cylinder_, rings, unrolledShare(), fewerThan);
+    const auto added =
+        chordPointsForUnrolledBound(*cylinder_, rings, unrolledShare(), fewerThan, &first);
     if (!added) return std::nullopt;
     // each point a cut of its edge's chord, as a kd-tree cell's side makes one (ModelTessellator
     // puts it on the 3D chord, where the fraction put it)
@@ -1248,13 +1248,15 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // A face on a cylinder whose unrolled triangles keep the bound over its loops' points takes
     // them. One that needs points on its chords for that asks for them where they are fewer
     // than the kd-tree's, below.
-    std::optional<std::vector<BoundaryCrossing>> unrolled;
+    std::vector<std::vector<Point3>> cylinderRings;
+    std::optional<UnrolledTriangles> firstTry;
     if (cylinder_) {
-        // as many points as the loops have at most: past that the kd-tree's cells would do
-        std::size_t points = 0;
-        for (const auto& loop : loops) points += loop.points.size();
-        unrolled = unrolledCrossings(loops, points);
-        if (unrolled && unrolled->empty()) {
+        cylinderRings = ringsInSpace(loops, [&](const BoundaryPoint& bp) {
+            return face_.surface.point(bp.uv.x(), bp.uv.y());
+        });
+        firstTry = triangulateUnrolled(*cylinder_, cylinderRings);
+        if (firstTry && std::all_of(firstTry->bounds.begin(), firstTry->bounds.end(),
+                                    [&](double bound) { return bound <= unrolledShare(); })) {
             leaves_.clear();
             return {};
         }
@@ -1290,7 +1292,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                                              origin.forward ? t : 1 - t, p.X, p.Y});
                     }
         });
-    if (unrolled) {
+    if (firstTry) {
         // Triangles over a polygon of b points on its boundary and i inside: b + 2 i - 2. The
         // unrolled ones have the loops' points and the added ones; the kd-tree's the loops'
         // points, its crossings, and at least the corners of its cells inside the region
@@ -1301,7 +1303,10 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                 for (const IntPoint& corner : leaf.rect.path())
                     if (!index.corners.count(keyOf(corner.X, corner.Y)))
                         inside.insert(keyOf(corner.X, corner.Y));
-        if (unrolled && unrolled->size() < crossings.size() + 2 * inside.size()) {
+        // (the first try's rounds go no farther than that: a face whose cylinder loses to its
+        // kd-tree, the bolt's half cylinders, takes none)
+        if (auto unrolled = unrolledCrossings(loops, cylinderRings, *firstTry,
+                                              crossings.size() + 2 * inside.size())) {
             leaves_.clear();
             return std::move(*unrolled);
         }

@@ -108,10 +108,12 @@ private:
     // What a triangle of a face on a cylinder may spend (its unrolled bound)
     double unrolledShare() const;
     // The points a face on a cylinder needs on its boundary chords for its unrolled triangles to
-    // keep the bound (none where they already do); nothing where that takes `fewerThan` points or
-    // more, or the loops do not unroll.
+    // keep the bound, as cuts of its edges; nothing where that takes `fewerThan` points or more,
+    // or the loops do not unroll. `rings`: the loops' points on the surface; `first`: their
+    // unrolled triangles.
     std::optional<std::vector<BoundaryCrossing>> unrolledCrossings(
-        const std::vector<BoundaryLoop>& loops, std::size_t fewerThan) const;
+        const std::vector<BoundaryLoop>& loops, const std::vector<std::vector<Point3>>& rings,
+        const UnrolledTriangles& first, std::size_t fewerThan) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;
