@@ -31,6 +31,13 @@ double cross(const Point2& a, const Point2& b, const Point2& c) {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
+// How far a triangle's corners spread about the axis (their unwrapped angles).
+double spanOf(const std::vector<double>& angles, std::uint32_t a, std::uint32_t b,
+              std::uint32_t c) {
+    return std::max({angles[a], angles[b], angles[c]}) -
+           std::min({angles[a], angles[b], angles[c]});
+}
+
 // Whether d lies inside the circle through a, b, c (counter-clockwise).
 bool insideCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
     const Point2 p = a - d, q = b - d, r = c - d;
@@ -140,8 +147,7 @@ void narrowBySpan(std::vector<Triangle>& triangles, const std::vector<Point2>& u
         },
         most);
     auto span = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        return std::max({angles[a], angles[b], angles[c]}) -
-               std::min({angles[a], angles[b], angles[c]});
+        return spanOf(angles, a, b, c);
     };
     flipWhere(
         triangles, unrolled,
@@ -264,11 +270,9 @@ std::optional<UnrolledTriangles> triangulateUnrolled(
     if (!triangles) return std::nullopt;
     narrowBySpan(*triangles, unrolled, angles);
     UnrolledTriangles result;
-    for (const auto& t : *triangles) {
-        const double span = std::max({angles[t[0]], angles[t[1]], angles[t[2]]}) -
-                            std::min({angles[t[0]], angles[t[1]], angles[t[2]]});
-        result.bounds.push_back(unrolledTriangleBound(frame.radius, span));
-    }
+    for (const auto& t : *triangles)
+        result.bounds.push_back(
+            unrolledTriangleBound(frame.radius, spanOf(angles, t[0], t[1], t[2])));
     result.triangles = std::move(*triangles);
     return result;
 }
@@ -304,9 +308,12 @@ std::optional<ChordFractions> chordPointsForUnrolledBound(
                 }
             }
         }
-        const auto unrolled =
-            round == 0 && first ? std::optional(*first) : triangulateUnrolled(frame, withAdded);
-        if (!unrolled) return std::nullopt;
+        std::optional<UnrolledTriangles> own;
+        if (round > 0 || !first) {
+            own = triangulateUnrolled(frame, withAdded);
+            if (!own) return std::nullopt;
+        }
+        const UnrolledTriangles* unrolled = own ? &*own : first;
         // the sides of the round's rings from point k to the next, and to k from the one before
         auto endOf = [&](std::size_t k) {
             const std::size_t ring = sources[k].ring;
@@ -348,14 +355,16 @@ std::optional<ChordFractions> chordPointsForUnrolledBound(
     return std::nullopt;
 }
 
+bool keepsBound(const UnrolledTriangles& unrolled, double surfaceShare) {
+    return surfaceShare > 0 && std::all_of(unrolled.bounds.begin(), unrolled.bounds.end(),
+                                           [&](double bound) { return bound <= surfaceShare; });
+}
+
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings,
     double surfaceShare) {
-    if (!(surfaceShare > 0)) return std::nullopt;
     auto unrolled = triangulateUnrolled(frame, rings);
-    if (!unrolled) return std::nullopt;
-    for (const double bound : unrolled->bounds)
-        if (!(bound <= surfaceShare)) return std::nullopt;
+    if (!unrolled || !keepsBound(*unrolled, surfaceShare)) return std::nullopt;
     return std::move(unrolled->triangles);
 }
 

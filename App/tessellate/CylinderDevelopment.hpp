@@ -69,6 +69,9 @@ std::optional<ChordFractions> chordPointsForUnrolledBound(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare,
     std::size_t fewerThan, const UnrolledTriangles* first = nullptr);
 
+// Whether every triangle's bound is within `surfaceShare` (a positive share).
+bool keepsBound(const UnrolledTriangles& unrolled, double surfaceShare);
+
 // The triangles of triangulateUnrolled where every bound is within `surfaceShare`; none else.
 std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulateOnCylinder(
     const CylinderFrame& frame, const std::vector<std::vector<Point3>>& rings, double surfaceShare);

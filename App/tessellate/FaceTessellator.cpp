@@ -1237,26 +1237,22 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     // A face in a plane whose loops make one polygon there takes no kd-tree: triangulate makes
     // its triangles in the plane, and no cell side cuts its chords (the loops' points are its
     // surface's at their (u, v) here, within the share gap of the points it gets).
-    if (plane_) {
-        if (developedTriangles(ringsInSpace(loops, [&](const BoundaryPoint& bp) {
-                return face_.surface.point(bp.uv.x(), bp.uv.y());
-            }))) {
-            leaves_.clear();
-            return {};
-        }
+    std::vector<std::vector<Point3>> onSurface;
+    if (plane_ || cylinder_)
+        onSurface = ringsInSpace(loops, [&](const BoundaryPoint& bp) {
+            return face_.surface.point(bp.uv.x(), bp.uv.y());
+        });
+    if (plane_ && developedTriangles(onSurface)) {
+        leaves_.clear();
+        return {};
     }
     // A face on a cylinder whose unrolled triangles keep the bound over its loops' points takes
     // them. One that needs points on its chords for that asks for them where they are fewer
     // than the kd-tree's, below.
-    std::vector<std::vector<Point3>> cylinderRings;
     std::optional<UnrolledTriangles> firstTry;
     if (cylinder_) {
-        cylinderRings = ringsInSpace(loops, [&](const BoundaryPoint& bp) {
-            return face_.surface.point(bp.uv.x(), bp.uv.y());
-        });
-        firstTry = triangulateUnrolled(*cylinder_, cylinderRings);
-        if (firstTry && std::all_of(firstTry->bounds.begin(), firstTry->bounds.end(),
-                                    [&](double bound) { return bound <= unrolledShare(); })) {
+        firstTry = triangulateUnrolled(*cylinder_, onSurface);
+        if (firstTry && keepsBound(*firstTry, unrolledShare())) {
             leaves_.clear();
             return {};
         }
@@ -1305,7 +1301,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
                         inside.insert(keyOf(corner.X, corner.Y));
         // (the first try's rounds go no farther than that: a face whose cylinder loses to its
         // kd-tree, the bolt's half cylinders, takes none)
-        if (auto unrolled = unrolledCrossings(loops, cylinderRings, *firstTry,
+        if (auto unrolled = unrolledCrossings(loops, onSurface, *firstTry,
                                               crossings.size() + 2 * inside.size())) {
             leaves_.clear();
             return std::move(*unrolled);
