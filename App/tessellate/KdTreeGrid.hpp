@@ -77,6 +77,12 @@ public:
     bool sameFrame(const KdTreeGrid& other) const {
         return hasFrame(other.low_, other.scale_, other.breaks_);
     }
+    // The same span borders, in steps, and ends within a step of `other`'s: two faces' frames of
+    // one edge, made from pcurve ends that differ in the last bits.
+    bool nearlySameFrame(const KdTreeGrid& other) const {
+        return breaks_ == other.breaks_ &&
+               framesWithinAStep(other.low_, other.parameterOf(kKdTreeFrameScale));
+    }
     // Step 0 at `low`, `scale` steps per unit of the parameter and these span borders
     // (spanBordersInFrame): the same lines, and the same columns for the same counts.
     bool hasFrame(double low, double scale, const std::vector<std::int64_t>& borders) const {
