@@ -21,9 +21,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <gp_Ax2.hxx>
+#include <optional>
 #include <set>
+#include <string>
 #include <vector>
 
+#include "VerifiedLargestFace.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
@@ -289,28 +292,28 @@ TEST(KdTreeGrid, FramesOfOneEdgeDifferingInTheLastBitsAreNear) {
     EXPECT_FALSE(grid.nearlySameFrame(KdTreeGrid(low, high, {0, 0.5, M_PI / 2})));
 }
 
+// A corpus model's triangles per face in guaranteed mode at relative 1e-4, its mesh within T
+// both ways with no open edge (test::verifiedTrianglesPerFace); none where the corpus is absent.
+std::optional<std::vector<std::size_t>> corpusTrianglesPerFaceAt1e4(const std::string& name) {
+    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / name;
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    const TopoDS_Shape shape = occ::readShape(path.string());
+    const Model model = occ::importModel(shape);
+    return test::verifiedTrianglesPerFace(shape, model, 1e-4 * model.boundingBoxDiagonal);
+}
+
 // bottle.brep's tori are mirror images in pairs (faces 8 and 11, 42 and 45), each sharing its
 // circles with a cylinder; one of each pair framed the circle a few bits off its cylinder's
 // frame, so the two were not tied and took halvings: 1,672 triangles against its image's 1,120
 // at relative 1e-4, 1,236 against 1,056. Now both take the same, and the mesh is within T.
 TEST(EvenColumns, MirrorImageToriTakeTheSameColumns) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "bottle.brep";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    TessellationOptions options;
-    options.tolerance = 1e-4 * model.boundingBoxDiagonal;
-    const auto result = tessellateModel(model, options);
-    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
-    for (const std::int32_t face : result.mesh.triangleFaces) ++perFace[std::size_t(face)];
-    EXPECT_EQ(perFace[11], perFace[8]);
-    EXPECT_EQ(perFace[32], perFace[27]);
-    EXPECT_EQ(perFace[45], perFace[42]);
-    EXPECT_EQ(perFace[64], perFace[59]);
-    EXPECT_LT(perFace[11], 1300u);
-    const auto report = occ::verifyMesh(shape, result.mesh, options.tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.openEdges, 0u);
+    const auto perFace = corpusTrianglesPerFaceAt1e4("bottle.brep");
+    if (!perFace) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    EXPECT_EQ((*perFace)[11], (*perFace)[8]);
+    EXPECT_EQ((*perFace)[32], (*perFace)[27]);
+    EXPECT_EQ((*perFace)[45], (*perFace)[42]);
+    EXPECT_EQ((*perFace)[64], (*perFace)[59]);
+    EXPECT_LT((*perFace)[11], 1300u);
 }
 
 // hammer.iges's rational fillets (faces 10 and 16, 12 and 18) have their whole boxes as regions,
@@ -318,20 +321,10 @@ TEST(EvenColumns, MirrorImageToriTakeTheSameColumns) {
 // columns out: 615 and 423 triangles each at relative 1e-4 instead of 712 and 544 with halvings,
 // the mesh within T with no open edge.
 TEST(EvenColumns, FaceBesideOneWithoutColumnsKeepsItsOwn) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / "hammer.iges";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus not found at " << path;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    TessellationOptions options;
-    options.tolerance = 1e-4 * model.boundingBoxDiagonal;
-    const auto result = tessellateModel(model, options);
-    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
-    for (const std::int32_t face : result.mesh.triangleFaces) ++perFace[std::size_t(face)];
-    for (const int face : {10, 16}) EXPECT_LT(perFace[face], 660u) << "face " << face;
-    for (const int face : {12, 18}) EXPECT_LT(perFace[face], 480u) << "face " << face;
-    const auto report = occ::verifyMesh(shape, result.mesh, options.tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.openEdges, 0u);
+    const auto perFace = corpusTrianglesPerFaceAt1e4("hammer.iges");
+    if (!perFace) GTEST_SKIP() << "corpus not found at " << NURBSLOD_CORPUS_DIR;
+    for (const int face : {10, 16}) EXPECT_LT((*perFace)[face], 660u) << "face " << face;
+    for (const int face : {12, 18}) EXPECT_LT((*perFace)[face], 480u) << "face " << face;
 }
 
 // A whole torus (as Part.makeTorus(10, 3), the generated shapes' torus) at relative 1e-3: its

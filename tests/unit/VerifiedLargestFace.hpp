@@ -25,19 +25,27 @@ inline void expectVerified(const TopoDS_Shape& shape, const TessellationResult& 
     EXPECT_EQ(report.openEdges, 0u);
 }
 
+// Tessellates `shape` at `tolerance` in guaranteed mode, checks it as expectVerified does, and
+// returns its triangles per face (index: FreeCAD's 1-based face number; 0 unused).
+inline std::vector<std::size_t> verifiedTrianglesPerFace(const TopoDS_Shape& shape,
+                                                         const Model& model, double tolerance) {
+    TessellationOptions options;
+    options.tolerance = tolerance;
+    const TessellationResult result = tessellateModel(model, options);
+    expectVerified(shape, result, tolerance);
+    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
+    for (const auto face : result.mesh.triangleFaces) ++perFace.at(face);
+    return perFace;
+}
+
 // Tessellates `shape` at `tolerance` in guaranteed mode, checks that it has `faceCount` faces,
 // that none failed and that `nurbslod verify`'s measure passes both ways with no open edge,
 // and returns the triangles of its face with the most.
 inline std::size_t verifiedLargestFaceTriangles(const TopoDS_Shape& shape, double tolerance,
                                                 std::size_t faceCount) {
-    TessellationOptions options;
-    options.tolerance = tolerance;
     const Model model = occ::importModel(shape);
     EXPECT_EQ(model.faces.size(), faceCount);
-    const TessellationResult result = tessellateModel(model, options);
-    expectVerified(shape, result, tolerance);
-    std::vector<std::size_t> perFace(model.faces.size() + 1, 0);
-    for (const auto face : result.mesh.triangleFaces) ++perFace.at(face);
+    const std::vector<std::size_t> perFace = verifiedTrianglesPerFace(shape, model, tolerance);
     return *std::max_element(perFace.begin(), perFace.end());
 }
 
