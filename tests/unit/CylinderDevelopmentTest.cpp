@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "CorpusMesh.hpp"
 #include "VerifiedLargestFace.hpp"
 #include "geometry/BSplineSurface.hpp"
 #include "occ/MeshVerifier.hpp"
@@ -204,13 +205,13 @@ std::array<std::size_t, 2> faceTrianglesUnrolledAndNot(Model model, const TopoDS
 // to be on a cylinder; none where the corpus is not there.
 std::optional<std::array<std::size_t, 2>> corpusFaceTrianglesUnrolledAndNot(const std::string& name,
                                                                             int face) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / name;
-    if (!std::filesystem::exists(path)) return std::nullopt;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
+    const auto corpus = test::corpusModel(name);
+    if (!corpus) return std::nullopt;
+    const Model& model = corpus->model;
     EXPECT_GE(model.faces.size(), static_cast<std::size_t>(face));
     EXPECT_TRUE(model.faces.at(face - 1).cylinder);
-    return faceTrianglesUnrolledAndNot(model, shape, 1e-4 * model.boundingBoxDiagonal, face);
+    return faceTrianglesUnrolledAndNot(model, corpus->shape, 1e-4 * model.boundingBoxDiagonal,
+                                       face);
 }
 
 // A cylinder cut by two slanted planes close together: its side is a narrow band between two

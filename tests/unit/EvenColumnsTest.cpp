@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "CorpusMesh.hpp"
 #include "VerifiedLargestFace.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
@@ -295,11 +296,10 @@ TEST(KdTreeGrid, FramesOfOneEdgeDifferingInTheLastBitsAreNear) {
 // A corpus model's triangles per face in guaranteed mode at relative 1e-4, its mesh within T
 // both ways with no open edge (test::verifiedTrianglesPerFace); none where the corpus is absent.
 std::optional<std::vector<std::size_t>> corpusTrianglesPerFaceAt1e4(const std::string& name) {
-    const auto path = std::filesystem::path(NURBSLOD_CORPUS_DIR) / name;
-    if (!std::filesystem::exists(path)) return std::nullopt;
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    return test::verifiedTrianglesPerFace(shape, model, 1e-4 * model.boundingBoxDiagonal);
+    const auto corpus = test::corpusModel(name);
+    if (!corpus) return std::nullopt;
+    return test::verifiedTrianglesPerFace(corpus->shape, corpus->model,
+                                          1e-4 * corpus->model.boundingBoxDiagonal);
 }
 
 // bottle.brep's tori are mirror images in pairs (faces 8 and 11, 42 and 45), each sharing its
