@@ -6,8 +6,10 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -20,7 +22,9 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Trsf.hxx>
 #include <optional>
 #include <set>
 #include <string>
@@ -464,6 +468,45 @@ TEST(EvenColumns, GradedColumnsFollowAnUnevenArc) {
     }
     const std::size_t middle = (lines.size() - 1) / 2;
     EXPECT_GT(lines[1] - lines[0], lines[middle + 1] - lines[middle]);
+}
+
+// A loft through four squares, each turned 30 degrees from the one below and 10 higher
+// (FreeCAD's Part.makeLoft, solid, not ruled): each side is a ruled surface whose lines turn as
+// it rises. Its cells' bound is mostly twist, which falls only linearly with the rows, so the
+// rows along the loft, whole cells across its straight side, number well over a thousand.
+TopoDS_Shape twistedLoft() {
+    BRepOffsetAPI_ThruSections loft(Standard_True, Standard_False);
+    for (int k = 0; k < 4; ++k) {
+        BRepBuilderAPI_MakePolygon square(gp_Pnt(-5, -5, 0), gp_Pnt(5, -5, 0), gp_Pnt(5, 5, 0),
+                                          gp_Pnt(-5, 5, 0), Standard_True);
+        gp_Trsf turn, lift;
+        turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), k * M_PI / 6);
+        lift.SetTranslation(gp_Vec(0, 0, 10.0 * k));
+        loft.AddWire(TopoDS::Wire(square.Wire().Moved(TopLoc_Location(lift * turn))));
+    }
+    loft.Build();
+    EXPECT_TRUE(loft.IsDone());
+    return loft.Shape();
+}
+
+// More than 256 equal columns a span (kMostColumns): the twisted loft's sides at relative 1e-4
+// took halvings with 256, 2,048 rows and 4,096 triangles each at 0.53 T; with equal columns
+// 2,280 each (9,124 in all; BRepMesh_IncrementalMesh at the same deflection 11,558).
+TEST(EvenColumns, TwistedLoftTakesMoreThan256Columns) {
+    const TopoDS_Shape shape = twistedLoft();
+    const Model model = occ::importModel(shape);
+    ASSERT_EQ(model.faces.size(), 6u);
+    const double tolerance = 1e-4 * model.boundingBoxDiagonal;
+    const std::vector<std::size_t> perFace =
+        test::verifiedTrianglesPerFace(shape, model, tolerance);
+    std::size_t sides = 0;
+    for (std::size_t f = 1; f < perFace.size(); ++f)
+        if (perFace[f] > 2) {
+            ++sides;
+            EXPECT_GT(perFace[f], 1000u);
+            EXPECT_LT(perFace[f], 3000u) << "face " << f;
+        }
+    EXPECT_EQ(sides, 4u);
 }
 
 // wing.brep's faces are whole boxes whose one long span bends unevenly: graded columns take
