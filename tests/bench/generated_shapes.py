@@ -3,8 +3,9 @@
 
 The corpus holds seven real files; a user's model is more often made in FreeCAD itself:
 primitives cut to angles (BRepPrimAPI's partial tori and spheres start their circles at -pi),
-booleans, fillets and chamfers, lofts, revolutions, sweeps along a helix, a freeform patch with
-a hole, a solid 1e5 across and one 1e-3 across. Each shape is a function here, so that the
+booleans, fillets and chamfers, lofts (a twisted one too), revolutions, sweeps along a helix and
+a space curve, a freeform patch with a hole and one thickened (an offset surface), a ruled face,
+a tube drilled twelve times, a solid 1e5 across and one 1e-3 across. Each shape is a function here, so that the
 Python tests take a few and the benchmark takes all:
 
   /usr/bin/python3 tests/bench/generated_shapes.py OUT_DIR        (writes OUT_DIR/NAME.brep)
@@ -155,12 +156,59 @@ def sliver_and_cylinder():
     return Part.makeBox(50, 0.01, 10).fuse(Part.makeCylinder(3, 10, V(25, 0, 0)))
 
 
+def twisted_loft():
+    """A solid loft through four squares, each turned 30 degrees from the one below: ruled
+    sides whose straight lines turn as they rise (their cells' bound is mostly twist)."""
+    sections = []
+    for k in range(4):
+        square = Part.makePolygon([V(-5, -5, 0), V(5, -5, 0), V(5, 5, 0), V(-5, 5, 0),
+                                   V(-5, -5, 0)])
+        square.rotate(V(0, 0, 0), V(0, 0, 1), 30 * k)
+        square.translate(V(0, 0, 10 * k))
+        sections.append(square)
+    return Part.makeLoft(sections, True, False)
+
+
+def ruled_circle_ellipse():
+    """One ruled face between a circle and an ellipse above it, its two rims free edges."""
+    return Part.makeRuledSurface(Part.Wire(Part.makeCircle(5)),
+                                 Part.Wire(Part.Ellipse(V(0, 0, 10), 8, 3).toShape()))
+
+
+def perforated_tube():
+    """A tube with twelve radial holes along a spiral: small cylinders meeting large ones."""
+    tube = Part.makeCylinder(10, 40).cut(Part.makeCylinder(9, 40))
+    for k in range(12):
+        angle = math.radians(30 * k)
+        tube = tube.cut(Part.makeCylinder(1, 30, V(0, 0, 5 + 2.5 * k),
+                                          V(math.cos(angle), math.sin(angle), 0)))
+    return tube
+
+
+def thickened_freeform():
+    """An interpolated B-spline patch thickened by 1 into a solid: its far side an offset
+    surface, which the importer converts with BRepBuilderAPI_NurbsConvert."""
+    surface = Part.BSplineSurface()
+    surface.interpolate([[V(i * 10, j * 10, 3 * math.sin(i) * math.cos(j)) for j in range(5)]
+                         for i in range(5)])
+    return surface.toShape().makeOffsetShape(1.0, 1e-6, fill=True)
+
+
+def pipe_along_spline():
+    """A circle swept along an interpolated space curve (a bent pipe)."""
+    path = Part.BSplineCurve()
+    path.interpolate([V(0, 0, 0), V(10, 5, 5), V(20, -5, 10), V(30, 0, 20)])
+    section = Part.Wire(Part.makeCircle(2, V(0, 0, 0), path.tangent(path.FirstParameter)[0]))
+    return Part.Wire(path.toShape()).makePipeShell([section], True, True)
+
+
 SHAPES = [elbow, torus_three_quarter_section, torus, spindle_torus, sphere, sphere_segment,
           ellipsoid, cone_to_apex, cone_frustum, box_minus_cylinder, crossed_cylinders,
           sphere_minus_cylinder, cone_with_sphere, filleted_box, chamfered_box,
           filleted_cylinder, loft, freeform_with_hole, revolved_profile, helical_sweep,
           hollow_sphere, box_with_slanted_cut, huge_box_minus_cylinder, tiny_box,
-          sliver_and_cylinder]
+          sliver_and_cylinder, twisted_loft, ruled_circle_ellipse, perforated_tube,
+          thickened_freeform, pipe_along_spline]
 
 
 def write(folder, shapes=SHAPES):

@@ -13,13 +13,17 @@ sys.path.insert(0, os.path.join(ROOT, "tests", "bench"))
 import generated_shapes  # noqa: E402
 
 # closed solids, including the partial tori whose circles start at -pi (their end faces were
-# once left empty); the freeform patch and the revolved profile have free edges
+# once left empty) and a thickened patch (an offset surface, converted by NurbsConvert); the
+# freeform patch, the revolved profile and the ruled face have free edges
 CLOSED = [generated_shapes.elbow, generated_shapes.torus_three_quarter_section,
           generated_shapes.sphere_segment, generated_shapes.cone_to_apex,
           generated_shapes.crossed_cylinders, generated_shapes.filleted_box,
           generated_shapes.loft, generated_shapes.huge_box_minus_cylinder,
-          generated_shapes.tiny_box, generated_shapes.sliver_and_cylinder]
-OPEN = [generated_shapes.freeform_with_hole, generated_shapes.revolved_profile]
+          generated_shapes.tiny_box, generated_shapes.sliver_and_cylinder,
+          generated_shapes.twisted_loft, generated_shapes.perforated_tube,
+          generated_shapes.thickened_freeform, generated_shapes.pipe_along_spline]
+OPEN = [generated_shapes.freeform_with_hole, generated_shapes.revolved_profile,
+        generated_shapes.ruled_circle_ellipse]
 
 
 class GeneratedShapes(TempDirTestCase):
