@@ -1,6 +1,7 @@
 #include "tessellate/EvenColumns.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -24,6 +25,8 @@ namespace {
 // twisted loft's sides took 2,048 rows of halvings at relative 1e-4, 16,388 triangles at 0.53 T,
 // against 9,124 at 0.95 T with equal ones (EvenColumns.TwistedLoftTakesMoreThan256Columns).
 constexpr int kMostColumns = 4096;
+// Up to this many whole columns a span are taken whatever power of two the halvings would need.
+constexpr int kColumnsAlwaysTaken = 256;
 
 // At most this many columns a span that the kd-tree cuts across into rows: beyond, halving is
 // as good. Up to 256, at relative 1e-4, the loft of tests/bench/generated_shapes.py took 16,336
@@ -317,11 +320,18 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             const int middle = (fails + count) / 2;
             (likelyMeets(middle) ? count : fails) = middle;
         }
-        // Where a column fails, the next count is one more up to 64 columns and a sixty-fourth
-        // more beyond: each check visits every column, and one at a time from thousands of
-        // columns took seconds (a ruled surface between a circle and an ellipse at relative
-        // 1e-4: 2,054 columns).
-        while (count <= kMostColumns) {
+        // Beyond kColumnsAlwaysTaken, only where the three columns above already ask for more,
+        // and well under the power of two that the halvings reach (kRowColumnsShare of it):
+        // checking every one of hundreds of columns costs more than the few it saves, and a
+        // count that grows past it only in the check has a column elsewhere that needs far more,
+        // which the halvings follow (the ruled face between a circle and an ellipse of
+        // tests/bench/generated_shapes.py at relative 1e-3 grew from about 250 to 509 columns,
+        // and its tessellation took 60 ms instead of 45).
+        const double most =
+            count > kColumnsAlwaysTaken
+                ? kRowColumnsShare * double(std::bit_ceil(static_cast<unsigned>(count)))
+                : double(kColumnsAlwaysTaken);
+        while (count <= kMostColumns && count <= most) {
             bool all = true;
             for (int c = 0; c < count && all; ++c) all = columnSettles(a, b, count, c);
             if (all) return count;
