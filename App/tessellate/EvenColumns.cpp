@@ -331,7 +331,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
             count > kColumnsAlwaysTaken
                 ? kRowColumnsShare * double(std::bit_ceil(static_cast<unsigned>(count)))
                 : double(kColumnsAlwaysTaken);
-        while (count <= kMostColumns && count <= most) {
+        while (count <= most) {
             bool all = true;
             for (int c = 0; c < count && all; ++c) all = columnSettles(a, b, count, c);
             if (all) return count;

@@ -5,8 +5,8 @@ The corpus holds seven real files; a user's model is more often made in FreeCAD 
 primitives cut to angles (BRepPrimAPI's partial tori and spheres start their circles at -pi),
 booleans, fillets and chamfers, lofts (a twisted one too), revolutions, sweeps along a helix and
 a space curve, a freeform patch with a hole and one thickened (an offset surface), a ruled face,
-a tube drilled twelve times, a solid 1e5 across and one 1e-3 across. Each shape is a function here, so that the
-Python tests take a few and the benchmark takes all:
+a tube drilled twelve times, a solid 1e5 across and one 1e-3 across. Each shape is a function
+here, so that the Python tests take a few and the benchmark takes all:
 
   /usr/bin/python3 tests/bench/generated_shapes.py OUT_DIR        (writes OUT_DIR/NAME.brep)
   tests/bench/model_benchmark.py --corpus OUT_DIR --md docs/benchmark-generated.md \
