@@ -483,6 +483,101 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
     return bound;
 }
 
+CellErrorBound cellErrorBoundAcrossSpans(const std::vector<SpanPiece>& pieces, ErrorMode mode,
+                                         double target, bool trimmedCell, bool byDistance,
+                                         double pieceFraction) {
+    CellErrorBound bound;
+    bound.interior = bound.boundary = bound.spreadToEdges = bound.spread =
+        std::numeric_limits<double>::infinity();
+    // the cell's corners: the corner poles of the pieces at the cell's corners
+    Point3 corner[2][2];
+    bool found[2][2] = {{false, false}, {false, false}};
+    for (const SpanPiece& piece : pieces) {
+        const int m = piece.patch.degreeU(), n = piece.patch.degreeV();
+        for (int a = 0; a <= 1; ++a)
+            for (int b = 0; b <= 1; ++b)
+                if ((a == 0 ? piece.s0 == 0 : piece.s1 == 1) &&
+                    (b == 0 ? piece.t0 == 0 : piece.t1 == 1)) {
+                    corner[a][b] = piece.patch.pole3(a * m, b * n);
+                    found[a][b] = true;
+                }
+    }
+    if (!(found[0][0] && found[0][1] && found[1][0] && found[1][1])) return bound;
+    const Point3 &c00 = corner[0][0], &c10 = corner[1][0], &c01 = corner[0][1], &c11 = corner[1][1];
+    bound.twist = 0.25 * (c00 - c10 - c01 + c11).norm();
+    if (byDistance) bound.planarTwist = planarTwistOf(c00, c10, c01, c11);
+    bound.pieceFraction = std::clamp(pieceFraction, 0.0, 1.0);
+    auto bilinear = [&](double s, double t) { return bilinearAt(c00, c10, c01, c11, s, t); };
+
+    if (mode == ErrorMode::Approximate) {
+        double largest = 0;
+        for (const SpanPiece& piece : pieces) {
+            const int m = piece.patch.degreeU(), n = piece.patch.degreeV();
+            const std::vector<Point3> samples = piece.patch.gridPoints(2 * m, 2 * n);
+            for (int i = 0; i <= 2 * m; ++i)
+                for (int j = 0; j <= 2 * n; ++j) {
+                    const double s = piece.s0 + (piece.s1 - piece.s0) * i / (2 * m);
+                    const double t = piece.t0 + (piece.t1 - piece.t0) * j / (2 * n);
+                    largest =
+                        std::max(largest, (samples[i * (2 * n + 1) + j] - bilinear(s, t)).norm());
+                }
+        }
+        bound.interior = bound.spreadToEdges = bound.spread = largest;
+        bound.boundary = 0;
+        return bound;
+    }
+    std::vector<BezierPatch> differences;
+    differences.reserve(pieces.size());
+    for (const SpanPiece& piece : pieces) {
+        const Point3 part[2][2] = {{bilinear(piece.s0, piece.t0), bilinear(piece.s0, piece.t1)},
+                                   {bilinear(piece.s1, piece.t0), bilinear(piece.s1, piece.t1)}};
+        differences.push_back(differencePatch(piece.patch, part));
+    }
+    // E's control points over all pieces, each piece's difference cut into `parts` x `parts`
+    // (as rangeOf does for one patch), and those on the cell's border
+    thread_local std::vector<Point3> points, sidePoints;
+    auto measure = [&](int parts) {
+        points.clear();
+        sidePoints.clear();
+        double interior2 = 0, boundary2 = 0;
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            const SpanPiece& piece = pieces[k];
+            std::array<BezierPatch, 4> quarters;
+            if (parts == 2) quarters = differences[k].quarters();
+            for (int a = 0; a < parts; ++a)
+                for (int b = 0; b < parts; ++b) {
+                    const BezierPatch& part = parts == 2 ? quarters[2 * a + b] : differences[k];
+                    const int m = part.degreeU(), n = part.degreeV();
+                    for (int i = 0; i <= m; ++i)
+                        for (int j = 0; j <= n; ++j) {
+                            const Point3 p = part.pole3(i, j);
+                            points.push_back(p);
+                            interior2 = std::max(interior2, p.squaredNorm());
+                            if ((i == 0 && a == 0 && piece.s0 == 0) ||
+                                (i == m && a == parts - 1 && piece.s1 == 1) ||
+                                (j == 0 && b == 0 && piece.t0 == 0) ||
+                                (j == n && b == parts - 1 && piece.t1 == 1)) {
+                                sidePoints.push_back(p);
+                                boundary2 = std::max(boundary2, p.squaredNorm());
+                            }
+                        }
+                }
+        }
+        // each subdivision gives true bounds on the same quantities: keep the smallest
+        const double interior = std::sqrt(interior2), boundary = std::sqrt(boundary2);
+        bound.interior = std::min(bound.interior, interior);
+        bound.boundary = std::min(bound.boundary, boundary);
+        bound.spreadToEdges =
+            std::min(bound.spreadToEdges,
+                     trimmedCell ? interior + boundary : farthestPair(points, sidePoints));
+        bound.spread = std::min(bound.spread, trimmedCell ? diameter(points) : 2 * interior);
+    };
+    measure(1);
+    const double reached = bound.measure(mode, trimmedCell);
+    if (reached > target && reached <= kWorthRefining * target) measure(2);
+    return bound;
+}
+
 CellErrorBound::Speed parameterSpeed(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
     double lowest = std::numeric_limits<double>::infinity();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "geometry/BezierPatch.hpp"
 #include "tessellate/TessellationOptions.hpp"
@@ -131,6 +132,31 @@ struct CellErrorBound {
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
                               bool trimmedCell = false, bool byDistance = true,
                               double pieceFraction = 1);
+
+// One Bezier span's part of a kd-tree cell that reaches across span borders: the span's patch
+// restricted to the part, and the part's place [s0, s1] x [t0, t1] in the cell's own parameters
+// (the parts tile [0, 1]^2; a part on the cell's border has its s0, s1, t0 or t1 exactly 0 or 1).
+struct SpanPiece {
+    BezierPatch patch;
+    double s0 = 0, s1 = 1, t0 = 0, t1 = 1;
+};
+
+// cellErrorBound for a cell made of several spans' pieces, which the kd-tree otherwise cuts at
+// every span border first: a B-spline with many knots (a fitted or scanned surface, one face of
+// 77 x 80 bicubic spans in OpenCASCADE's MAT.brep sample) took at least one cell a span, twice
+// the triangles BRepMesh needs there. B is the bilinear patch of the cell's four corners, and
+// on each piece E = S - B is the piece's rational Bezier patch less B restricted to the piece
+// (itself bilinear, with the corners B(s0, t0) ... B(s1, t1)), so E over the cell lies in the
+// union of the pieces' hulls: the spreads are the largest distances between control points of
+// all the pieces (to those on the cell's border for spreadToEdges), and the twist terms are the
+// corners' alone, as for one patch (the argument in CellErrorBound holds for any E with that
+// hull property). Where that is above `target` but within twice of it, each piece's E is cut
+// into quarters (de Casteljau) and the bound taken over their control points, as for one patch.
+// Mode Approximate: the pieces' sample grids against B. No reparametrisation: a cell that does
+// not settle is cut at its span borders as before.
+CellErrorBound cellErrorBoundAcrossSpans(const std::vector<SpanPiece>& pieces, ErrorMode mode,
+                                         double target, bool trimmedCell, bool byDistance,
+                                         double pieceFraction);
 
 // CellErrorBound::Speed of a patch. With poles P_ij, weights w_ij > 0 and W = sum w_ij B_ij,
 //   dS/ds = sum_ij w_ij (dB_ij/ds) (P_ij - S) / W

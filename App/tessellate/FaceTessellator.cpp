@@ -699,6 +699,64 @@ struct FaceTessellator::CellDecisions {
     std::unordered_map<std::array<cInt, 4>, Decision, RectHash> byRect;
 };
 
+bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
+                                         const std::vector<cInt>& breaksX,
+                                         const std::vector<cInt>& breaksY, double target,
+                                         bool trimmedCell, double pieceFraction) const {
+    const std::size_t count = (breaksX.size() + 1) * (breaksY.size() + 1);
+    if (count > kMostSpansInCell) return false;
+    const Rect r{cell[0], cell[1], cell[2], cell[3]};
+    std::vector<cInt> xs{r.x0}, ys{r.y0};
+    xs.insert(xs.end(), breaksX.begin(), breaksX.end());
+    ys.insert(ys.end(), breaksY.begin(), breaksY.end());
+    xs.push_back(r.x1);
+    ys.push_back(r.y1);
+    // Most such cells are far from settling (cells smaller than spans at a fine tolerance): a
+    // surface point off the bilinear patch of the corners by more than the target rules the
+    // cell out before any piece is made (every measure is at least |E| anywhere, E being 0 at
+    // the corners), here at the centre and at the span corners inside the cell.
+    auto surfaceAt = [&](cInt x, cInt y) {
+        const Point2 uv = frame_->toParameter(x, y);
+        const int su = patches_.spanIndexU(uv.x()), sv = patches_.spanIndexV(uv.y());
+        const auto& breaksU = patches_.breakpointsU();
+        const auto& breaksV = patches_.breakpointsV();
+        return patches_.patch(su, sv).point(
+            (uv.x() - breaksU[su]) / (breaksU[su + 1] - breaksU[su]),
+            (uv.y() - breaksV[sv]) / (breaksV[sv + 1] - breaksV[sv]));
+    };
+    const Point3 c00 = surfaceAt(r.x0, r.y0), c10 = surfaceAt(r.x1, r.y0);
+    const Point3 c01 = surfaceAt(r.x0, r.y1), c11 = surfaceAt(r.x1, r.y1);
+    auto beyond = [&](cInt x, cInt y) {
+        const double s = double(x - r.x0) / double(r.x1 - r.x0);
+        const double t = double(y - r.y0) / double(r.y1 - r.y0);
+        const Point3 bilinear = (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
+        return (surfaceAt(x, y) - bilinear).norm() > target;
+    };
+    if (beyond(r.x0 + (r.x1 - r.x0) / 2, r.y0 + (r.y1 - r.y0) / 2)) return false;
+    for (std::size_t a = 1; a + 1 < xs.size(); ++a)
+        for (std::size_t b = 1; b + 1 < ys.size(); ++b)
+            if (beyond(xs[a], ys[b])) return false;
+    std::vector<SpanPiece> pieces;
+    pieces.reserve(count);
+    for (std::size_t a = 0; a + 1 < xs.size(); ++a)
+        for (std::size_t b = 0; b + 1 < ys.size(); ++b) {
+            const Point2 low = frame_->toParameter(xs[a], ys[b]);
+            const Point2 high = frame_->toParameter(xs[a + 1], ys[b + 1]);
+            const Point2 middle = 0.5 * (low + high);
+            const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
+            SpanPiece piece{patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y())};
+            // exactly 0 and 1 at the cell's sides, which the bound takes for its border
+            piece.s0 = double(xs[a] - r.x0) / double(r.x1 - r.x0);
+            piece.s1 = double(xs[a + 1] - r.x0) / double(r.x1 - r.x0);
+            piece.t0 = double(ys[b] - r.y0) / double(r.y1 - r.y0);
+            piece.t1 = double(ys[b + 1] - r.y0) / double(r.y1 - r.y0);
+            pieces.push_back(std::move(piece));
+        }
+    return cellErrorBoundAcrossSpans(pieces, mode_, target, trimmedCell,
+                                     choices_.flatCellsByDistance, pieceFraction)
+               .measure(mode_, trimmedCell) <= target;
+}
+
 void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                   CellDecisions& decisions) {
     leaves_.clear();
@@ -833,7 +891,21 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         };
         const auto spanBreaksX = inside(frame_->breaksX, r.x0, r.x1);
         const auto spanBreaksY = inside(frame_->breaksY, r.y0, r.y1);
+        const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
+        const bool trimmedCell = !node.full && !sidesOnly;
         if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
+            // filled cells' answers kept for the second build, as below
+            const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
+            const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
+            const bool settles = known != decisions.byRect.end()
+                                     ? known->second.settles
+                                     : settlesAcrossSpans(key, spanBreaksX, spanBreaksY, target,
+                                                          trimmedCell, pieceFraction);
+            if (node.full && decisions.record) decisions.byRect[key] = {settles, 0};
+            if (settles) {
+                leaves_[node.index].leaf = true;
+                continue;
+            }
             const bool alongU = spanBreaksX.size() >= spanBreaksY.size();
             const auto& breaks = alongU ? spanBreaksX : spanBreaksY;
             const cInt middle = alongU ? (r.x0 + r.x1) / 2 : (r.y0 + r.y1) / 2;
@@ -869,8 +941,6 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                 childrenPiece = ownPiece;
         }
         const BezierPatch& piece = *ownPiece;
-        const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
-        const bool trimmedCell = !node.full && !sidesOnly;
         // a cell whose centre is off by more than the target is split whatever its bound
         int preferredDirection = 0;
         // a trimmed cell whose bound for corners on its sides would do (bandSplit), and the

@@ -86,6 +86,15 @@ private:
     // decisions: what the bounds said of filled cells, kept by one build for the next
     struct CellDecisions;
     void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing, CellDecisions& decisions);
+    // Whether a cell across span borders (breaksX, breaksY inside it) is within `target` as one
+    // cell (cellErrorBoundAcrossSpans; cell = x0, y0, x1, y1 in frame steps), for the kd-tree,
+    // which otherwise cuts it at its span borders. Only cells of at most kMostSpansInCell spans are
+    // bounded.
+    static constexpr std::size_t kMostSpansInCell = 1024;
+    bool settlesAcrossSpans(const std::array<ClipperLib::cInt, 4>& cell,
+                            const std::vector<ClipperLib::cInt>& breaksX,
+                            const std::vector<ClipperLib::cInt>& breaksY, double target,
+                            bool trimmedCell, double pieceFraction) const;
     // visit(leaf, piece, oneSimpleRing): the piece of the region that the leaf is cut from,
     // and whether it is known to be one simple ring
     void forEachLeaf(
