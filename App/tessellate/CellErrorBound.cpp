@@ -578,6 +578,14 @@ CellErrorBound cellErrorBoundAcrossSpans(const std::vector<SpanPiece>& pieces, E
     return bound;
 }
 
+double twistTerm(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,
+                 ErrorMode mode, bool trimmedCell, bool byDistance, double pieceFraction) {
+    const double twist = 0.25 * (c00 - c10 - c01 + c11).norm();
+    if (mode == ErrorMode::Guaranteed && trimmedCell)
+        return std::clamp(pieceFraction, 0.0, 1.0) * twist;
+    return byDistance ? std::min(twist, planarTwistOf(c00, c10, c01, c11)) : twist;
+}
+
 CellErrorBound::Speed parameterSpeed(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
     double lowest = std::numeric_limits<double>::infinity();

@@ -158,6 +158,13 @@ CellErrorBound cellErrorBoundAcrossSpans(const std::vector<SpanPiece>& pieces, E
                                          double target, bool trimmedCell, bool byDistance,
                                          double pieceFraction);
 
+// The twist part of CellErrorBound::measure for a cell with these corners (its bilinear patch
+// B): min(twist, planarTwist), or pieceFraction twist for a trimmed cell in mode Guaranteed.
+// Every measure is at least |S - B| at any point of the cell plus this term (E = S - B is 0 at
+// the corners, which lie on the sides): a lower bound that rules a cell out cheaply.
+double twistTerm(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,
+                 ErrorMode mode, bool trimmedCell, bool byDistance, double pieceFraction);
+
 // CellErrorBound::Speed of a patch. With poles P_ij, weights w_ij > 0 and W = sum w_ij B_ij,
 //   dS/ds = sum_ij w_ij (dB_ij/ds) (P_ij - S) / W
 //         = m / W sum_kj B_k,m-1 B_j (w_k+1,j (P_k+1,j - S) - w_kj (P_kj - S)),

@@ -726,16 +726,20 @@ bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
     };
     const Point3 c00 = surfaceAt(r.x0, r.y0), c10 = surfaceAt(r.x1, r.y0);
     const Point3 c01 = surfaceAt(r.x0, r.y1), c11 = surfaceAt(r.x1, r.y1);
+    const double beyondAt = target - twistTerm(c00, c10, c01, c11, mode_, trimmedCell,
+                                               choices_.flatCellsByDistance, pieceFraction);
     auto beyond = [&](cInt x, cInt y) {
         const double s = double(x - r.x0) / double(r.x1 - r.x0);
         const double t = double(y - r.y0) / double(r.y1 - r.y0);
         const Point3 bilinear = (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-        return (surfaceAt(x, y) - bilinear).norm() > target;
+        return (surfaceAt(x, y) - bilinear).norm() > beyondAt;
     };
     if (beyond(r.x0 + (r.x1 - r.x0) / 2, r.y0 + (r.y1 - r.y0) / 2)) return false;
-    for (std::size_t a = 1; a + 1 < xs.size(); ++a)
-        for (std::size_t b = 1; b + 1 < ys.size(); ++b)
-            if (beyond(xs[a], ys[b])) return false;
+    for (std::size_t a = 0; a + 1 < xs.size(); ++a)
+        for (std::size_t b = 0; b + 1 < ys.size(); ++b)
+            if ((a > 0 && b > 0 && beyond(xs[a], ys[b])) ||
+                beyond(xs[a] + (xs[a + 1] - xs[a]) / 2, ys[b] + (ys[b + 1] - ys[b]) / 2))
+                return false;
     std::vector<SpanPiece> pieces;
     pieces.reserve(count);
     for (std::size_t a = 0; a + 1 < xs.size(); ++a)
