@@ -5,7 +5,8 @@ The corpus holds seven real files; a user's model is more often made in FreeCAD 
 primitives cut to angles (BRepPrimAPI's partial tori and spheres start their circles at -pi),
 booleans, fillets and chamfers, lofts (a twisted one too), revolutions, sweeps along a helix and
 a space curve, a freeform patch with a hole and one thickened (an offset surface), a ruled face,
-a tube drilled twelve times, a solid 1e5 across and one 1e-3 across. Each shape is a function
+a tube drilled twelve times, a surface fitted through a grid of points (many small spans) and a
+solid made of it, a solid 1e5 across and one 1e-3 across. Each shape is a function
 here, so that the Python tests take a few and the benchmark takes all:
 
   /usr/bin/python3 tests/bench/generated_shapes.py OUT_DIR        (writes OUT_DIR/NAME.brep)
@@ -202,13 +203,28 @@ def pipe_along_spline():
     return Part.Wire(path.toShape()).makePipeShell([section], True, True)
 
 
+def fitted_surface():
+    """A B-spline surface interpolated through a 60 x 60 grid of heights, as a surface fitted
+    to measured points comes: 57 x 57 bicubic spans, far smaller than the surface bends, one
+    face, all its edges free."""
+    surface = Part.BSplineSurface()
+    surface.interpolate([[V(i, j, 3 * math.sin(i / 12) * math.cos(j / 15) +
+                            math.sin(i * j / 400)) for j in range(60)] for i in range(60)])
+    return surface.toShape()
+
+
+def fitted_block():
+    """The fitted surface extruded down into a solid: its sides extrusions of 37-span curves."""
+    return fitted_surface().extrude(V(0, 0, -10))
+
+
 SHAPES = [elbow, torus_three_quarter_section, torus, spindle_torus, sphere, sphere_segment,
           ellipsoid, cone_to_apex, cone_frustum, box_minus_cylinder, crossed_cylinders,
           sphere_minus_cylinder, cone_with_sphere, filleted_box, chamfered_box,
           filleted_cylinder, loft, freeform_with_hole, revolved_profile, helical_sweep,
           hollow_sphere, box_with_slanted_cut, huge_box_minus_cylinder, tiny_box,
           sliver_and_cylinder, twisted_loft, ruled_circle_ellipse, perforated_tube,
-          thickened_freeform, pipe_along_spline]
+          thickened_freeform, pipe_along_spline, fitted_surface, fitted_block]
 
 
 def write(folder, shapes=SHAPES):

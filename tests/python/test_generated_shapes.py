@@ -14,16 +14,18 @@ import generated_shapes  # noqa: E402
 
 # closed solids, including the partial tori whose circles start at -pi (their end faces were
 # once left empty) and a thickened patch (an offset surface, converted by NurbsConvert); the
-# freeform patch, the revolved profile and the ruled face have free edges
+# freeform patch, the revolved profile, the ruled face and the fitted surface (57 x 57 spans,
+# whose cells reach across them) have free edges; the fitted block is a solid of it
 CLOSED = [generated_shapes.elbow, generated_shapes.torus_three_quarter_section,
           generated_shapes.sphere_segment, generated_shapes.cone_to_apex,
           generated_shapes.crossed_cylinders, generated_shapes.filleted_box,
           generated_shapes.loft, generated_shapes.huge_box_minus_cylinder,
           generated_shapes.tiny_box, generated_shapes.sliver_and_cylinder,
           generated_shapes.twisted_loft, generated_shapes.perforated_tube,
-          generated_shapes.thickened_freeform, generated_shapes.pipe_along_spline]
+          generated_shapes.thickened_freeform, generated_shapes.pipe_along_spline,
+          generated_shapes.fitted_block]
 OPEN = [generated_shapes.freeform_with_hole, generated_shapes.revolved_profile,
-        generated_shapes.ruled_circle_ellipse]
+        generated_shapes.ruled_circle_ellipse, generated_shapes.fitted_surface]
 
 
 class GeneratedShapes(TempDirTestCase):
