@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "CellBorderPoint.hpp"
 #include "geometry/BezierReparametrization.hpp"
 #include "geometry/SegmentDistance.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -49,22 +50,6 @@ BezierPatch randomPatch(std::mt19937& random, int degreeU, int degreeV, double n
     return patch;
 }
 
-// A point on the cell's border, one of the four sides at random.
-Parameter onBorder(std::mt19937& random) {
-    std::uniform_real_distribution<double> along(0, 1);
-    const double x = along(random);
-    switch (std::uniform_int_distribution<int>(0, 3)(random)) {
-        case 0:
-            return {x, 0};
-        case 1:
-            return {1, x};
-        case 2:
-            return {x, 1};
-        default:
-            return {0, x};
-    }
-}
-
 // The bound is a true bound: never below a distance measured between the surface and triangles
 // of the kinds the tessellator makes, with and without the subdivision that tightens it.
 TEST(CellErrorBound, GuaranteedBoundIsNeverBelowAMeasuredDistance) {
@@ -95,8 +80,10 @@ TEST(CellErrorBound, GuaranteedBoundIsNeverBelowAMeasuredDistance) {
                             EXPECT_LE(two, bound.untrimmed() * (1 + 1e-9) + 1e-12);
                             // triangles with corners on the sides (a neighbour's points)
                             for (int k = 0; k < 6; ++k) {
-                                const double d = sampledTriangleDistance(
-                                    patch, onBorder(random), onBorder(random), onBorder(random));
+                                const double d =
+                                    sampledTriangleDistance(patch, testing::cellBorderPoint(random),
+                                                            testing::cellBorderPoint(random),
+                                                            testing::cellBorderPoint(random));
                                 EXPECT_LE(d, bound.untrimmed() * (1 + 1e-9) + 1e-12);
                             }
                             // triangles with corners anywhere (trimming points)
@@ -444,7 +431,8 @@ TEST(CellErrorBound, FlatCellsOutOfPlaneTwistCountsAboutAQuarter) {
         std::vector<std::array<Parameter, 3>> triangles = {{{{0, 0}, {1, 0}, {1, 1}}},
                                                            {{{0, 0}, {1, 1}, {0, 1}}}};
         for (int k = 0; k < 4; ++k)
-            triangles.push_back({onBorder(random), onBorder(random), onBorder(random)});
+            triangles.push_back({testing::cellBorderPoint(random), testing::cellBorderPoint(random),
+                                 testing::cellBorderPoint(random)});
         double surfaceToTriangles = 0, trianglesToSurface = 0;
         constexpr int steps = 10;
         for (int i = 0; i <= steps; ++i)
@@ -647,7 +635,9 @@ TEST(CellErrorBound, EvenSpeedBoundIsNeverBelowAMeasuredDistance) {
                         {Parameter{0, 0}, Parameter{1, 0}, Parameter{1, 1}},
                         {Parameter{0, 0}, Parameter{1, 1}, Parameter{0, 1}}};
                     for (int k = 0; k < 2; ++k)
-                        triangles.push_back({onBorder(random), onBorder(random), onBorder(random)});
+                        triangles.push_back({testing::cellBorderPoint(random),
+                                             testing::cellBorderPoint(random),
+                                             testing::cellBorderPoint(random)});
                     for (const auto& t : triangles) {
                         const Point3 a = patch.point(t[0][0], t[0][1]);
                         const Point3 b = patch.point(t[1][0], t[1][1]);

@@ -17,6 +17,7 @@
 #include <random>
 #include <vector>
 
+#include "CellBorderPoint.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -92,20 +93,6 @@ struct KinkedCell {
     }
 };
 
-Parameter onBorder(std::mt19937& random) {
-    const double x = std::uniform_real_distribution<double>(0, 1)(random);
-    switch (std::uniform_int_distribution<int>(0, 3)(random)) {
-        case 0:
-            return {x, 0};
-        case 1:
-            return {1, x};
-        case 2:
-            return {x, 1};
-        default:
-            return {0, x};
-    }
-}
-
 TEST(CellsAcrossSpans, BoundIsNeverBelowAMeasuredDistanceOnAKinkedSurface) {
     std::mt19937 random(11);
     std::uniform_real_distribution<double> anywhere(0, 1);
@@ -128,8 +115,9 @@ TEST(CellsAcrossSpans, BoundIsNeverBelowAMeasuredDistanceOnAKinkedSurface) {
                           bound.untrimmed() * (1 + 1e-9) + 1e-12);
                 for (int k = 0; k < 8; ++k) {
                     // corners on the sides: a neighbour's points
-                    EXPECT_LE(sampledTriangleDistance(surface, onBorder(random), onBorder(random),
-                                                      onBorder(random)),
+                    EXPECT_LE(sampledTriangleDistance(surface, testing::cellBorderPoint(random),
+                                                      testing::cellBorderPoint(random),
+                                                      testing::cellBorderPoint(random)),
                               bound.untrimmed() * (1 + 1e-9) + 1e-12);
                     // corners anywhere: trimming points
                     EXPECT_LE(sampledTriangleDistance(surface, {anywhere(random), anywhere(random)},
