@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "CellBorderPoint.hpp"
+#include "CellSamples.hpp"
 #include "geometry/BezierReparametrization.hpp"
 #include "geometry/SegmentDistance.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -17,21 +17,11 @@ namespace {
 
 using Parameter = std::array<double, 2>;
 
-// Largest distance between the surface and the flat triangle over the parameter triangle
-// (a, b, c) whose corners are surface points, sampled on a barycentric grid.
+// testing::sampledTriangleDistance over the patch
 double sampledTriangleDistance(const BezierPatch& patch, const Parameter& a, const Parameter& b,
                                const Parameter& c, int steps = 12) {
-    const Point3 pa = patch.point(a[0], a[1]), pb = patch.point(b[0], b[1]);
-    const Point3 pc = patch.point(c[0], c[1]);
-    double worst = 0;
-    for (int i = 0; i <= steps; ++i)
-        for (int j = 0; i + j <= steps; ++j) {
-            const double la = double(i) / steps, lb = double(j) / steps, lc = 1 - la - lb;
-            const double s = la * a[0] + lb * b[0] + lc * c[0];
-            const double t = la * a[1] + lb * b[1] + lc * c[1];
-            worst = std::max(worst, (patch.point(s, t) - (la * pa + lb * pb + lc * pc)).norm());
-        }
-    return worst;
+    return testing::sampledTriangleDistance([&](double s, double t) { return patch.point(s, t); },
+                                            a, b, c, steps);
 }
 
 // A rational patch of the given degrees: a smooth bump with noise on the control points and

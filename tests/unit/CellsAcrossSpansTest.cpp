@@ -17,7 +17,7 @@
 #include <random>
 #include <vector>
 
-#include "CellBorderPoint.hpp"
+#include "CellSamples.hpp"
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -28,23 +28,6 @@ namespace {
 
 using Parameter = std::array<double, 2>;
 using Surface = std::function<Point3(double, double)>;
-
-// Largest distance between the surface and the flat triangle through its points at the
-// parameters a, b, c, at equal parameters, on a barycentric grid.
-double sampledTriangleDistance(const Surface& surface, const Parameter& a, const Parameter& b,
-                               const Parameter& c) {
-    constexpr int kSteps = 12;
-    const Point3 pa = surface(a[0], a[1]), pb = surface(b[0], b[1]), pc = surface(c[0], c[1]);
-    double worst = 0;
-    for (int i = 0; i <= kSteps; ++i)
-        for (int j = 0; i + j <= kSteps; ++j) {
-            const double la = double(i) / kSteps, lb = double(j) / kSteps, lc = 1 - la - lb;
-            const double s = la * a[0] + lb * b[0] + lc * c[0];
-            const double t = la * a[1] + lb * b[1] + lc * c[1];
-            worst = std::max(worst, (surface(s, t) - (la * pa + lb * pb + lc * pc)).norm());
-        }
-    return worst;
-}
 
 // A rational bicubic patch over [x0, x1] x [y0, y1] of a wavy sheet, with jittered control
 // points and weights from 0.3 to 3.
@@ -110,19 +93,22 @@ TEST(CellsAcrossSpans, BoundIsNeverBelowAMeasuredDistanceOnAKinkedSurface) {
                 const CellErrorBound bound = cellErrorBoundAcrossSpans(
                     cell.pieces, ErrorMode::Guaranteed, target, trimmedCell, false, 1);
                 EXPECT_LE(bound.measure(ErrorMode::Guaranteed, trimmedCell), coarseMeasure + 1e-15);
-                EXPECT_LE(std::max(sampledTriangleDistance(surface, {0, 0}, {1, 0}, {1, 1}),
-                                   sampledTriangleDistance(surface, {0, 0}, {1, 1}, {0, 1})),
-                          bound.untrimmed() * (1 + 1e-9) + 1e-12);
+                EXPECT_LE(
+                    std::max(testing::sampledTriangleDistance(surface, {0, 0}, {1, 0}, {1, 1}),
+                             testing::sampledTriangleDistance(surface, {0, 0}, {1, 1}, {0, 1})),
+                    bound.untrimmed() * (1 + 1e-9) + 1e-12);
                 for (int k = 0; k < 8; ++k) {
                     // corners on the sides: a neighbour's points
-                    EXPECT_LE(sampledTriangleDistance(surface, testing::cellBorderPoint(random),
-                                                      testing::cellBorderPoint(random),
-                                                      testing::cellBorderPoint(random)),
-                              bound.untrimmed() * (1 + 1e-9) + 1e-12);
+                    EXPECT_LE(
+                        testing::sampledTriangleDistance(surface, testing::cellBorderPoint(random),
+                                                         testing::cellBorderPoint(random),
+                                                         testing::cellBorderPoint(random)),
+                        bound.untrimmed() * (1 + 1e-9) + 1e-12);
                     // corners anywhere: trimming points
-                    EXPECT_LE(sampledTriangleDistance(surface, {anywhere(random), anywhere(random)},
-                                                      {anywhere(random), anywhere(random)},
-                                                      {anywhere(random), anywhere(random)}),
+                    EXPECT_LE(testing::sampledTriangleDistance(
+                                  surface, {anywhere(random), anywhere(random)},
+                                  {anywhere(random), anywhere(random)},
+                                  {anywhere(random), anywhere(random)}),
                               bound.trimmed() * (1 + 1e-9) + 1e-12);
                 }
                 ++checked;
