@@ -292,12 +292,6 @@ int splitDirectionOfNet(const std::vector<Point3>& net, int m, int n, const Poin
     return bendU >= bendV ? 0 : 1;
 }
 
-// The bilinear patch of the corners c00, c10, c01, c11 at (s, t).
-Point3 bilinearAt(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,
-                  double s, double t) {
-    return (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-}
-
 // The net point farthest from the bilinear patch of the corners (the first of equals), and
 // its distance.
 struct FarthestNetPoint {

@@ -133,6 +133,12 @@ CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double t
                               bool trimmedCell = false, bool byDistance = true,
                               double pieceFraction = 1);
 
+// The bilinear patch of the corners c00, c10, c01, c11 at (s, t): B of the bounds below.
+inline Point3 bilinearAt(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,
+                         double s, double t) {
+    return (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
+}
+
 // One Bezier span's part of a kd-tree cell that reaches across span borders: the span's patch
 // restricted to the part, and the part's place [s0, s1] x [t0, t1] in the cell's own parameters
 // (the parts tile [0, 1]^2; a part on the cell's border has its s0, s1, t0 or t1 exactly 0 or 1).

@@ -712,9 +712,9 @@ bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
     xs.push_back(r.x1);
     ys.push_back(r.y1);
     // Most such cells are far from settling (cells smaller than spans at a fine tolerance): a
-    // surface point off the bilinear patch of the corners by more than the target rules the
-    // cell out before any piece is made (every measure is at least |E| anywhere, E being 0 at
-    // the corners), here at the centre and at the span corners inside the cell.
+    // surface point off the bilinear patch of the corners by more than the target less the
+    // twist term rules the cell out before any piece is made (twistTerm), here at the centre,
+    // at the span corners inside the cell and at the middle of each span's piece.
     auto surfaceAt = [&](cInt x, cInt y) {
         const Point2 uv = frame_->toParameter(x, y);
         const int su = patches_.spanIndexU(uv.x()), sv = patches_.spanIndexV(uv.y());
@@ -731,8 +731,7 @@ bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
     auto beyond = [&](cInt x, cInt y) {
         const double s = double(x - r.x0) / double(r.x1 - r.x0);
         const double t = double(y - r.y0) / double(r.y1 - r.y0);
-        const Point3 bilinear = (1 - s) * ((1 - t) * c00 + t * c01) + s * ((1 - t) * c10 + t * c11);
-        return (surfaceAt(x, y) - bilinear).norm() > beyondAt;
+        return (surfaceAt(x, y) - bilinearAt(c00, c10, c01, c11, s, t)).norm() > beyondAt;
     };
     if (beyond(r.x0 + (r.x1 - r.x0) / 2, r.y0 + (r.y1 - r.y0) / 2)) return false;
     for (std::size_t a = 0; a + 1 < xs.size(); ++a)
@@ -897,10 +896,10 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         const auto spanBreaksY = inside(frame_->breaksY, r.y0, r.y1);
         const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
+        // what the bounds said of this filled cell in the first build, if it did
+        const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
+        const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
         if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
-            // filled cells' answers kept for the second build, as below
-            const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
-            const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
             const bool settles = known != decisions.byRect.end()
                                      ? known->second.settles
                                      : settlesAcrossSpans(key, spanBreaksX, spanBreaksY, target,
@@ -951,8 +950,6 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // widest band it may cut off
         bool sidesWouldDo = false;
         double widestBand = kWidestBand;
-        const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
-        const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
         if (known != decisions.byRect.end()) {
             if (known->second.settles) {
                 leaves_[node.index].leaf = true;

@@ -192,6 +192,27 @@ TEST(CellsAcrossSpans, SurfaceOfManySmallSpansTakesFewerCellsThanSpans) {
     }
 }
 
+// `shape`, one face, tessellated in guaranteed mode at `relative` of its diagonal: no face
+// failed, and the verifier's measure passes both ways. Returns the triangles and the report.
+struct VerifiedFace {
+    std::size_t triangles = 0;
+    occ::VerificationReport report;
+};
+VerifiedFace verifiedOneFace(const TopoDS_Shape& shape, double relative) {
+    const Model model = occ::importModel(shape);
+    EXPECT_EQ(model.faces.size(), 1u);
+    TessellationOptions options;
+    options.tolerance = relative * model.boundingBoxDiagonal;
+    const TessellationResult result = tessellateModel(model, options);
+    EXPECT_TRUE(result.failures.empty())
+        << (result.failures.empty() ? "" : result.failures.front().reason);
+    VerifiedFace verified{result.mesh.triangles.size(),
+                          occ::verifyMesh(shape, result.mesh, options.tolerance)};
+    EXPECT_TRUE(verified.report.pass)
+        << "max dev " << verified.report.maxDev << " cover " << verified.report.maxCover;
+    return verified;
+}
+
 // A sphere approximated by a bicubic B-spline of 64 x 6 spans, its tips (where a span border
 // row collapses to a point) inside cells that reach across spans: the corners of such a cell
 // coincide in pairs, and its twist term is the collapsed side's (planarTwist). At relative
@@ -205,17 +226,9 @@ TEST(CellsAcrossSpans, SphereOfManySpansKeepsItsTips) {
     ASSERT_TRUE(approximation.HasResult());
     const Handle(Geom_BSplineSurface) surface = approximation.Surface();
     ASSERT_GE(surface->NbUKnots() * surface->NbVKnots(), 100);
-    const TopoDS_Face face = BRepBuilderAPI_MakeFace(surface, 1e-6);
-    const Model model = occ::importModel(face);
-    ASSERT_EQ(model.faces.size(), 1u);
-    TessellationOptions options;
-    options.tolerance = 1e-2 * model.boundingBoxDiagonal;
-    const TessellationResult result = tessellateModel(model, options);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_LT(result.mesh.triangles.size(), 1000u);
-    const auto report = occ::verifyMesh(face, result.mesh, options.tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.openEdges, 0u);
+    const VerifiedFace verified = verifiedOneFace(BRepBuilderAPI_MakeFace(surface, 1e-6), 1e-2);
+    EXPECT_LT(verified.triangles, 1000u);
+    EXPECT_EQ(verified.report.openEdges, 0u);
 }
 
 // OpenCASCADE's sample MAT.brep (occt-misc, which libocct-foundation-dev depends on): one
@@ -225,16 +238,7 @@ TEST(CellsAcrossSpans, SphereOfManySpansKeepsItsTips) {
 TEST(CellsAcrossSpans, FittedSampleFaceTakesFewerCellsThanSpans) {
     const std::filesystem::path path = "/usr/share/opencascade/data/occ/MAT.brep";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "OpenCASCADE's samples not found";
-    const TopoDS_Shape shape = occ::readShape(path.string());
-    const Model model = occ::importModel(shape);
-    ASSERT_EQ(model.faces.size(), 1u);
-    TessellationOptions options;
-    options.tolerance = 1e-3 * model.boundingBoxDiagonal;
-    const TessellationResult result = tessellateModel(model, options);
-    ASSERT_TRUE(result.failures.empty()) << result.failures.front().reason;
-    EXPECT_LT(result.mesh.triangles.size(), 12000u);
-    const auto report = occ::verifyMesh(shape, result.mesh, options.tolerance);
-    EXPECT_TRUE(report.pass) << "max dev " << report.maxDev << " cover " << report.maxCover;
+    EXPECT_LT(verifiedOneFace(occ::readShape(path.string()), 1e-3).triangles, 12000u);
 }
 
 }  // namespace
