@@ -899,11 +899,12 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // what the bounds said of this filled cell in the first build, if it did
         const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
         const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
+        // kept as a flag: the decisions recorded below may rehash the map, and `known` with it
+        const bool decided = known != decisions.byRect.end();
         if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
-            const bool settles = known != decisions.byRect.end()
-                                     ? known->second.settles
-                                     : settlesAcrossSpans(key, spanBreaksX, spanBreaksY, target,
-                                                          trimmedCell, pieceFraction);
+            const bool settles = decided ? known->second.settles
+                                         : settlesAcrossSpans(key, spanBreaksX, spanBreaksY, target,
+                                                              trimmedCell, pieceFraction);
             if (node.full && decisions.record) decisions.byRect[key] = {settles, 0};
             if (settles) {
                 leaves_[node.index].leaf = true;
@@ -950,7 +951,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // widest band it may cut off
         bool sidesWouldDo = false;
         double widestBand = kWidestBand;
-        if (known != decisions.byRect.end()) {
+        if (decided) {
             if (known->second.settles) {
                 leaves_[node.index].leaf = true;
                 continue;
@@ -1012,7 +1013,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // the other halving where it settles both halves and the bound's does not (the
         // command line's meshes; the display's keep the paper's cut). The second build (even
         // columns) reads the direction from the decisions.
-        if (choices_.middleSplits && canU && canV && known == decisions.byRect.end()) {
+        if (choices_.middleSplits && canU && canV && !decided) {
             preferredDirection =
                 settlingSplitDirection(piece, preferredDirection, target, trimmedCell,
                                        choices_.flatCellsByDistance, pieceFraction, mode_);
