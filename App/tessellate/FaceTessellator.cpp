@@ -453,6 +453,10 @@ struct FaceTessellator::Leaf {
     bool full = false;  // inside the region with a margin: no boundary point touches it
     int children[2] = {-1, -1};
     bool leaf = false;
+    // How far the leaf's bound is below the surface share, which its triangles then leave
+    // unspent (guaranteed mode, a cell the boundary crosses; 0 where not measured): the
+    // removal of open boundary points may spend it (removeOpenBoundaryPoints).
+    double slack = 0;
 };
 
 namespace {
@@ -699,12 +703,13 @@ struct FaceTessellator::CellDecisions {
     std::unordered_map<std::array<cInt, 4>, Decision, RectHash> byRect;
 };
 
-bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
+double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
                                          const std::vector<cInt>& breaksX,
                                          const std::vector<cInt>& breaksY, double target,
                                          bool trimmedCell, double pieceFraction) const {
     const std::size_t count = (breaksX.size() + 1) * (breaksY.size() + 1);
-    if (count > kMostSpansInCell) return false;
+    constexpr double kUnsettled = std::numeric_limits<double>::infinity();
+    if (count > kMostSpansInCell) return kUnsettled;
     const Rect r{cell[0], cell[1], cell[2], cell[3]};
     std::vector<cInt> xs{r.x0}, ys{r.y0};
     xs.insert(xs.end(), breaksX.begin(), breaksX.end());
@@ -733,12 +738,12 @@ bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
         const double t = double(y - r.y0) / double(r.y1 - r.y0);
         return (surfaceAt(x, y) - bilinearAt(c00, c10, c01, c11, s, t)).norm() > beyondAt;
     };
-    if (beyond(r.x0 + (r.x1 - r.x0) / 2, r.y0 + (r.y1 - r.y0) / 2)) return false;
+    if (beyond(r.x0 + (r.x1 - r.x0) / 2, r.y0 + (r.y1 - r.y0) / 2)) return kUnsettled;
     for (std::size_t a = 0; a + 1 < xs.size(); ++a)
         for (std::size_t b = 0; b + 1 < ys.size(); ++b)
             if ((a > 0 && b > 0 && beyond(xs[a], ys[b])) ||
                 beyond(xs[a] + (xs[a + 1] - xs[a]) / 2, ys[b] + (ys[b + 1] - ys[b]) / 2))
-                return false;
+                return kUnsettled;
     std::vector<SpanPiece> pieces;
     pieces.reserve(count);
     for (std::size_t a = 0; a + 1 < xs.size(); ++a)
@@ -757,7 +762,7 @@ bool FaceTessellator::settlesAcrossSpans(const std::array<cInt, 4>& cell,
         }
     return cellErrorBoundAcrossSpans(pieces, mode_, target, trimmedCell,
                                      choices_.flatCellsByDistance, pieceFraction)
-               .measure(mode_, trimmedCell) <= target;
+        .measure(mode_, trimmedCell);
 }
 
 void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
@@ -901,13 +906,23 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         const auto known = node.full ? decisions.byRect.find(key) : decisions.byRect.end();
         // kept as a flag: the decisions recorded below may rehash the map, and `known` with it
         const bool decided = known != decisions.byRect.end();
+        // a leaf, within `bound` of the surface where its bound was measured
+        auto settle = [&](double bound) {
+            Leaf& leaf = leaves_[node.index];
+            leaf.leaf = true;
+            if (mode_ == ErrorMode::Guaranteed && choices_.openPointsSpendCellSlack && !node.full &&
+                bound <= target)
+                leaf.slack = target - bound;
+        };
+        constexpr double kUnmeasured = std::numeric_limits<double>::infinity();
         if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
-            const bool settles = decided ? known->second.settles
-                                         : settlesAcrossSpans(key, spanBreaksX, spanBreaksY, target,
-                                                              trimmedCell, pieceFraction);
+            const double bound = decided ? kUnmeasured
+                                         : boundAcrossSpans(key, spanBreaksX, spanBreaksY, target,
+                                                            trimmedCell, pieceFraction);
+            const bool settles = decided ? known->second.settles : bound <= target;
             if (node.full && decisions.record) decisions.byRect[key] = {settles, 0};
             if (settles) {
-                leaves_[node.index].leaf = true;
+                settle(bound);
                 continue;
             }
             const bool alongU = spanBreaksX.size() >= spanBreaksY.size();
@@ -976,7 +991,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             if (node.full && decisions.record)
                 decisions.byRect[key] = {settles, bound.splitDirection};
             if (settles) {
-                leaves_[node.index].leaf = true;
+                settle(bound.measure(mode_, trimmedCell));
                 continue;
             }
             // a boundary a hair inside the cell's sides, on a face whose filled cells take the
@@ -986,9 +1001,10 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                 if (const auto near = nearSideOffsets(*node.region, r, node.simpleRing)) {
                     // the bound for corners on the sides, measured for them (not the trimmed
                     // cell's plain sum)
-                    if (measuredSides().nearSides(parameterSpeed(piece), (*near)[0], (*near)[1]) <=
-                        target) {
-                        leaves_[node.index].leaf = true;
+                    const double nearBound =
+                        measuredSides().nearSides(parameterSpeed(piece), (*near)[0], (*near)[1]);
+                    if (nearBound <= target) {
+                        settle(nearBound);
                         continue;
                     }
                 }
@@ -1523,6 +1539,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
             addTriangle({vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]});
     }
 
+    // each triangle's leaf's slack (Leaf::slack; 0 for the triangles of no leaf)
+    std::vector<double> triangleSlack;
     // one polygon's vertex ids and rings, their capacity kept from leaf to leaf
     std::vector<std::uint32_t> ids;
     std::vector<std::vector<IntegerPoint2>> integerRings;
@@ -1580,7 +1598,9 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
                     for (const auto& t : triangulation.triangles)
                         addTriangle({ids[t[0]], ids[t[1]], ids[t[2]]});
                 }
+                triangleSlack.resize(mesh.triangles.size(), leaf.slack);
             });
+    triangleSlack.resize(mesh.triangles.size(), 0.0);
 
     // positions and exact normals at every vertex (section 8), in one pass that shares the
     // basis functions of equal u and v values; a shared vertex keeps its edge's position (the
@@ -1594,7 +1614,8 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normals[i]) : normals[i];
         mesh.vertices[i].uv = uvOfVertex[i];
     }
-    removeOpenBoundaryPoints(mesh, sharedOffsets, 0.5 * budget_.shareGap + budget_.openChords);
+    removeOpenBoundaryPoints(mesh, sharedOffsets, triangleSlack,
+                             0.5 * budget_.shareGap + budget_.openChords);
     splitNeedles(mesh.triangles,
                  [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; });
     if (face_.reversed)

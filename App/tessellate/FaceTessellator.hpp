@@ -30,6 +30,7 @@ struct CellChoices {
     bool splitThroughBoundaryPoints = true;
     bool flatCellsByDistance = true;
     bool middleSplits = true;
+    bool openPointsSpendCellSlack = true;
     // A cell the region fills exactly (its boundary along the cell's sides) takes the bound
     // for corners on its sides. Not on a face with free edges: the points its cells leave
     // on their chords are dropped where the triangles change little
@@ -86,12 +87,12 @@ private:
     // decisions: what the bounds said of filled cells, kept by one build for the next
     struct CellDecisions;
     void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing, CellDecisions& decisions);
-    // Whether a cell across span borders (breaksX, breaksY inside it) is within `target` as one
-    // cell (cellErrorBoundAcrossSpans; cell = x0, y0, x1, y1 in frame steps), for the kd-tree,
-    // which otherwise cuts it at its span borders. Only cells of at most kMostSpansInCell spans are
-    // bounded.
+    // The bound of a cell across span borders (breaksX, breaksY inside it) as one cell
+    // (cellErrorBoundAcrossSpans; cell = x0, y0, x1, y1 in frame steps), for the kd-tree, which
+    // cuts it at its span borders where the bound is above `target`. Infinite where a quick test
+    // already finds it above, or where the cell holds more than kMostSpansInCell spans.
     static constexpr std::size_t kMostSpansInCell = 1024;
-    bool settlesAcrossSpans(const std::array<ClipperLib::cInt, 4>& cell,
+    double boundAcrossSpans(const std::array<ClipperLib::cInt, 4>& cell,
                             const std::vector<ClipperLib::cInt>& breaksX,
                             const std::vector<ClipperLib::cInt>& breaksY, double target,
                             bool trimmedCell, double pieceFraction) const;

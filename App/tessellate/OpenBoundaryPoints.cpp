@@ -422,15 +422,19 @@ std::optional<std::pair<std::vector<std::uint32_t>, std::vector<std::size_t>>> d
 }  // namespace
 
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
-                                     double allowance) {
+                                     const std::vector<double>& slack, double allowance) {
     const std::size_t vertexCount = mesh.vertices.size();
     std::vector<std::vector<std::size_t>> trianglesOf(vertexCount);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         for (std::uint32_t i : mesh.triangles[t]) trianglesOf[i].push_back(t);
     std::vector<char> removed(mesh.triangles.size(), 0);
-    // how far each triangle may be from the face's first triangles: a re-triangulation of
-    // triangles that an earlier one made adds to what that one changed
+    // how far each triangle may be from the face's first triangles, less its cell's slack (the
+    // first triangles are within the cell's bound of the surface, the surface share less the
+    // slack): a re-triangulation of triangles that an earlier one made adds to what that one
+    // changed
     std::vector<double> changed(mesh.triangles.size(), 0.0);
+    for (std::size_t t = 0; t < changed.size() && t < slack.size(); ++t)
+        changed[t] = -std::max(0.0, slack[t]);
     std::vector<char> dropped(vertexCount, 0), chordTried(vertexCount, 0);
     std::size_t count = 0;
 
@@ -489,7 +493,7 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
         for (std::uint32_t i : ring)
             if (mesh.vertices[i].shared)
                 ringOffset = std::max(ringOffset, sharedOffsets[mesh.vertices[i].sharedId]);
-        double before = 0;
+        double before = -std::numeric_limits<double>::infinity();
         for (std::size_t t : inside) before = std::max(before, changed[t]);
         const double limit = allowance - before - ringOffset;
         if (!(limit >= 0)) return false;

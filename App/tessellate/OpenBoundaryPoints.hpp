@@ -13,12 +13,14 @@ namespace nurbslod {
 // of the mesh. All such vertices of one chord go at once: the union of their fans is
 // re-triangulated without them when the new triangles are valid in (u, v) and the new surface is
 // within `allowance` of the first one, less the share budget that the ring's shared vertices
-// already spend (sharedOffsets, by shared id): the new triangles then stay within the face's
-// bound, as the share budget was the one part of it left unspent. Where that fails, each half
-// of the chord's vertices is tried, then each vertex alone; a re-triangulation of triangles an
-// earlier one made counts that one's change too. Works in (u, v) counter-clockwise order, before
-// any reversal of the face. Returns how many points were removed.
+// already spend (sharedOffsets, by shared id), plus what the old triangles' cells leave of the
+// surface share (slack, by triangle: the surface share less the cell's bound): the new
+// triangles then stay within the face's bound, as those were the parts of it left unspent.
+// Where that fails, each half of the chord's vertices is tried, then each vertex alone; a
+// re-triangulation of triangles an earlier one made counts that one's change too. Works in
+// (u, v) counter-clockwise order, before any reversal of the face. Returns how many points were
+// removed.
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
-                                     double allowance);
+                                     const std::vector<double>& slack, double allowance);
 
 }  // namespace nurbslod

@@ -56,6 +56,11 @@ struct TessellationOptions {
     // bounds were measured on those cuts, and with middle halvings a G2 joint's zebra stripes
     // kinked by 13.2 degrees (6.8 before; the overlay test allows 10).
     bool middleSplits = true;
+    // The points that cell sides leave on an open boundary's chords are dropped where the new
+    // triangles stay within the face's bound, which counts what each old triangle's cell left
+    // of the surface share (Leaf::slack in FaceTessellator, removeOpenBoundaryPoints). Off, only
+    // the share gap and openChords: to measure what the slack saves.
+    bool openPointsSpendCellSlack = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;

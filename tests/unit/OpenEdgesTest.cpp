@@ -265,7 +265,7 @@ TEST(OpenEdges, ChordPointIsDroppedOnlyWithinTheAllowance) {
     const std::vector<double> noOffsets(16, 0.0);
     // flat: the fan is re-made without v, the open boundary is one chord again
     FaceMesh flat = fanOnChord(0.0);
-    EXPECT_EQ(removeOpenBoundaryPoints(flat, noOffsets, 1e-3), 1u);
+    EXPECT_EQ(removeOpenBoundaryPoints(flat, noOffsets, {}, 1e-3), 1u);
     for (const auto& t : flat.triangles) EXPECT_TRUE(t[0] != 2 && t[1] != 2 && t[2] != 2);
     EXPECT_EQ(openEdges(
                   [&] {
@@ -277,12 +277,53 @@ TEST(OpenEdges, ChordPointIsDroppedOnlyWithinTheAllowance) {
               5u);  // a-b, b-e, e-f, f-c, c-a
     // bent: without v the surface would move by about the bend; v stays
     FaceMesh bent = fanOnChord(0.05);
-    EXPECT_EQ(removeOpenBoundaryPoints(bent, noOffsets, 1e-3), 0u);
+    EXPECT_EQ(removeOpenBoundaryPoints(bent, noOffsets, {}, 1e-3), 0u);
     EXPECT_EQ(bent.triangles.size(), 6u);
-    EXPECT_EQ(removeOpenBoundaryPoints(bent, noOffsets, 0.1), 1u);
+    EXPECT_EQ(removeOpenBoundaryPoints(bent, noOffsets, {}, 0.1), 1u);
     // the share budget that the fan's shared points already spend is not spent twice
     FaceMesh spent = fanOnChord(0.0);
-    EXPECT_EQ(removeOpenBoundaryPoints(spent, std::vector<double>(16, 2e-3), 1e-3), 0u);
+    EXPECT_EQ(removeOpenBoundaryPoints(spent, std::vector<double>(16, 2e-3), {}, 1e-3), 0u);
+}
+
+// What the old triangles' cells leave of the surface share (slack, by triangle) may be spent
+// too, but only where every triangle of the fan leaves it: the bent fan goes with 0.1 of slack
+// on its four triangles, not with that slack on the two triangles beyond it or on three of
+// the four.
+TEST(OpenEdges, ChordPointIsDroppedWithinTheCellsSlack) {
+    const std::vector<double> noOffsets(16, 0.0);
+    FaceMesh beyond = fanOnChord(0.05);
+    EXPECT_EQ(removeOpenBoundaryPoints(beyond, noOffsets, {0, 0, 0, 0, 0.1, 0.1}, 1e-3), 0u);
+    FaceMesh threeOfFour = fanOnChord(0.05);
+    EXPECT_EQ(removeOpenBoundaryPoints(threeOfFour, noOffsets, {0.1, 0.1, 0, 0.1}, 1e-3), 0u);
+    FaceMesh fan = fanOnChord(0.05);
+    EXPECT_EQ(removeOpenBoundaryPoints(fan, noOffsets, {0.1, 0.1, 0.1, 0.1}, 1e-3), 1u);
+    for (const auto& t : fan.triangles) EXPECT_TRUE(t[0] != 2 && t[1] != 2 && t[2] != 2);
+}
+
+// On OpenCASCADE's samples whose faces have free edges, the cells' slack drops more of the
+// points on the free chords: MAT.brep (one bumpy face of 77 x 80 spans) at relative 1e-3 keeps
+// 212 open edges instead of 246 (BRepMesh at the same deflection: 196), shell1.brep at 1e-4
+// 155 instead of 167 (95). Both meshes are verified within the tolerance by the tests of cells
+// across spans and of a pole's row (FittedSampleFaceTakesFewerCellsThanSpans,
+// AnEndAtAPoleKeepsItsSide).
+TEST(OpenEdges, CellsSlackDropsMorePointsOnFreeChords) {
+    for (const auto& [name, relative] :
+         {std::pair<const char*, double>{"MAT.brep", 1e-3}, {"shell1.brep", 1e-4}}) {
+        const auto shape = test::sampleModel(test::kOpenCascadeSamples / name);
+        if (!shape) GTEST_SKIP() << "OpenCASCADE's samples not found";
+        const Model model = occ::importModel(*shape);
+        TessellationOptions options;
+        options.tolerance = relative * model.boundingBoxDiagonal;
+        const auto withSlack = tessellateModel(model, options);
+        options.openPointsSpendCellSlack = false;
+        const auto without = tessellateModel(model, options);
+        const std::size_t ours =
+            openEdges(withSlack.mesh.positions, withSlack.mesh.triangles, options.tolerance);
+        const std::size_t before =
+            openEdges(without.mesh.positions, without.mesh.triangles, options.tolerance);
+        EXPECT_LT(double(ours), 0.95 * double(before)) << name << ": " << ours << " vs " << before;
+        EXPECT_LE(withSlack.mesh.triangles.size(), without.mesh.triangles.size()) << name;
+    }
 }
 
 }  // namespace
@@ -324,7 +365,8 @@ FaceMesh bandOnChord(std::uint32_t count) {
 // and the upper row's count + 1 sides, in count + 2 triangles.
 void expectEveryChordPointDropped(std::uint32_t count) {
     FaceMesh band = bandOnChord(count);
-    EXPECT_EQ(removeOpenBoundaryPoints(band, std::vector<double>(2 * count + 4, 0.0), 1e-6), count);
+    EXPECT_EQ(removeOpenBoundaryPoints(band, std::vector<double>(2 * count + 4, 0.0), {}, 1e-6),
+              count);
     std::vector<Point3> positions;
     for (const auto& vertex : band.vertices) positions.push_back(vertex.position);
     EXPECT_EQ(openEdges(positions, band.triangles, 1e-3), std::size_t(count + 4));
