@@ -765,6 +765,38 @@ double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
         .measure(mode_, trimmedCell);
 }
 
+void FaceTessellator::setFreeChords(const std::vector<BoundaryLoop>& loops) {
+    freeChords_.clear();
+    if (choices_.freeEdges.empty() || mode_ != ErrorMode::Guaranteed) return;
+    const auto integer = integerBoundary(loops);
+    for (std::size_t l = 0; l < loops.size(); ++l)
+        for (std::size_t i = 0; i < loops[l].points.size(); ++i) {
+            const int edge = loops[l].origins[i].edge;
+            if (std::binary_search(choices_.freeEdges.begin(), choices_.freeEdges.end(), edge))
+                freeChords_.push_back({integer[l][i], integer[l][(i + 1) % integer[l].size()]});
+        }
+}
+
+bool FaceTessellator::touchesFreeChord(const std::array<cInt, 4>& cell) const {
+    for (const auto& [a, b] : freeChords_) {
+        if (std::max(a.X, b.X) < cell[0] || std::min(a.X, b.X) > cell[2] ||
+            std::max(a.Y, b.Y) < cell[1] || std::min(a.Y, b.Y) > cell[3])
+            continue;
+        // the boxes meet: the segment meets the cell unless all four corners lie strictly on
+        // one side of its line
+        const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+        int above = 0, below = 0;
+        for (const cInt x : {cell[0], cell[2]})
+            for (const cInt y : {cell[1], cell[3]}) {
+                const double side = dx * double(y - a.Y) - dy * double(x - a.X);
+                above += side > 0;
+                below += side < 0;
+            }
+        if (above < 4 && below < 4) return true;
+    }
+    return false;
+}
+
 void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                   CellDecisions& decisions) {
     leaves_.clear();
@@ -899,7 +931,12 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         };
         const auto spanBreaksX = inside(frame_->breaksX, r.x0, r.x1);
         const auto spanBreaksY = inside(frame_->breaksY, r.y0, r.y1);
-        const double target = node.full ? wholeCellTarget(budget_, mode_) : budget_.surface;
+        // a cell at a free chord, on a face asked to refine there, takes a smaller target
+        // (kFreeChordTarget)
+        const double target = node.full ? wholeCellTarget(budget_, mode_)
+                              : touchesFreeChord({r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1})
+                                  ? kFreeChordTarget * budget_.surface
+                                  : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
         // what the bounds said of this filled cell in the first build, if it did
         const std::array<cInt, 4> key{r.x0, r.y0, r.x1, r.y1};
@@ -912,7 +949,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             leaf.leaf = true;
             if (mode_ == ErrorMode::Guaranteed && choices_.openPointsSpendCellSlack && !node.full &&
                 bound <= target)
-                leaf.slack = target - bound;
+                leaf.slack = budget_.surface - bound;
         };
         constexpr double kUnmeasured = std::numeric_limits<double>::infinity();
         if (!spanBreaksX.empty() || !spanBreaksY.empty()) {
@@ -1317,6 +1354,7 @@ std::vector<BoundaryCrossing> FaceTessellator::findCrossings(
     const std::vector<BoundaryLoop>& loops) {
     if (auto problem = face_.surface.problem()) throw std::runtime_error(*problem);
     setFrame(loops);
+    setFreeChords(loops);
     const Paths region = regionOf(loops);
     double area = 0;
     for (const auto& p : region) area += ClipperLib::Area(p);
@@ -1418,7 +1456,10 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     // One that findCrossings left without a kd-tree, whose loops with their final points make
     // no polygon in the plane, takes its kd-tree now: the points its cells cut on shared chords
     // reach the other faces as open cuts (ModelTessellator, step 5b).
-    if (!inPlane && leaves_.empty()) buildLeaves(region, isOneRingWithoutTouch(region));
+    if (!inPlane && leaves_.empty()) {
+        setFreeChords(loops);
+        buildLeaves(region, isOneRingWithoutTouch(region));
+    }
 
     std::vector<Rect> cells;
     for (const auto& leaf : leaves_)

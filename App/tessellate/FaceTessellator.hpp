@@ -31,6 +31,10 @@ struct CellChoices {
     bool flatCellsByDistance = true;
     bool middleSplits = true;
     bool openPointsSpendCellSlack = true;
+    // The face's free edges (model edge indices, sorted), where its cells at their chords take
+    // a smaller target (FaceTessellator::kFreeChordTarget); empty on a first tessellation, and
+    // on a second one for a face that needs none (tessellateModel).
+    std::vector<int> freeEdges;
     // A cell the region fills exactly (its boundary along the cell's sides) takes the bound
     // for corners on its sides. Not on a face with free edges: the points its cells leave
     // on their chords are dropped where the triangles change little
@@ -124,6 +128,15 @@ private:
     std::optional<std::vector<BoundaryCrossing>> unrolledCrossings(
         const std::vector<BoundaryLoop>& loops, const std::vector<std::vector<Point3>>& rings,
         const UnrolledTriangles& first, std::size_t fewerThan) const;
+    // A cell of a face with free edges that touches one of their chords is bounded to this
+    // share of the surface share: the points its sides leave on the chord are then dropped
+    // more often, as its triangles leave the rest to that removal (Leaf::slack).
+    static constexpr double kFreeChordTarget = 0.5;
+    // The chords of the face's free edges in the frame (setFreeChords), and whether a cell
+    // (x0, y0, x1, y1) meets one of them.
+    std::vector<std::array<ClipperLib::IntPoint, 2>> freeChords_;
+    void setFreeChords(const std::vector<BoundaryLoop>& loops);
+    bool touchesFreeChord(const std::array<ClipperLib::cInt, 4>& cell) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;

@@ -100,6 +100,23 @@ std::size_t faceOpenEdges(const Mesh& mesh, int face) {
         sides.begin(), sides.end(), [](const auto& side) { return side.second == 1; }));
 }
 
+std::vector<std::size_t> meshOpenEdgesByFace(const Mesh& mesh, std::size_t faces) {
+    // each side with the face of its first triangle, and how many triangles have it
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, int>> sides;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& c = mesh.triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            auto& side = sides[std::minmax(c[k], c[(k + 1) % 3])];
+            if (side.second++ == 0) side.first = mesh.triangleFaces[t];
+        }
+    }
+    std::vector<std::size_t> open(faces, 0);
+    for (const auto& [key, side] : sides)
+        if (side.second == 1 && side.first >= 1 && static_cast<std::size_t>(side.first) <= faces)
+            ++open[side.first - 1];
+    return open;
+}
+
 void replaceFaceTriangles(Mesh& mesh, int face, const Mesh& alone) {
     constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
     Mesh result;

@@ -24,6 +24,10 @@ Model loneFaceModel(const Model& model, int face);
 // of its triangles has.
 std::size_t faceOpenEdges(const Mesh& mesh, int face);
 
+// The open edges of the whole mesh (the sides of its triangles that no other triangle has) by
+// the face of their triangle (index face - 1; `faces` in all).
+std::vector<std::size_t> meshOpenEdgesByFace(const Mesh& mesh, std::size_t faces);
+
 // Replaces the triangles of face `face` (1-based) with the triangles of `alone`, a mesh of that
 // face only, where the face's first triangle was; the positions and normals no triangle uses
 // any longer go.

@@ -82,9 +82,14 @@ double spread(const std::vector<Point3>& points) {
 
 // One tessellation of the model (tessellateModel). freeEdgesAsCurveUses: a free edge may be its
 // face's curve use (see boxRegion below); tessellateModel asks for it on lone faces only, with
-// openEdgeLimit the open edges of the face's first mesh (0: none).
+// openEdgeLimit the open edges of the face's first mesh (0: none). refineFreeChords (by face,
+// empty: none): the face's cells at its free edges' chords take a smaller target
+// (CellChoices::freeEdges). freeSegments, where given, gets the number of each face's free
+// edges' segments.
 TessellationResult tessellateOnce(const Model& model, const TessellationOptions& options,
-                                  bool freeEdgesAsCurveUses, std::size_t openEdgeLimit = 0) {
+                                  bool freeEdgesAsCurveUses, std::size_t openEdgeLimit = 0,
+                                  const std::vector<char>& refineFreeChords = {},
+                                  std::vector<std::size_t>* freeSegments = nullptr) {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<tbb::global_control> threads;
     if (options.threads > 1)
@@ -1468,6 +1473,14 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
             choices.flatCellsByDistance = options.flatCellsByDistance;
             choices.middleSplits = options.middleSplits;
             choices.openPointsSpendCellSlack = options.openPointsSpendCellSlack;
+            if (f < static_cast<int>(refineFreeChords.size()) && refineFreeChords[f] &&
+                options.freeEdgesTakeSurfaceShare && !chordsOnSurface[f]) {
+                for (const auto& loop : model.faces[f].loops)
+                    for (const auto& curve : loop.curves)
+                        if (uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated)
+                            choices.freeEdges.push_back(curve.edge);
+                std::sort(choices.freeEdges.begin(), choices.freeEdges.end());
+            }
             choices.filledCellsBySides = !hasFreeEdge(f) || chordsOnSurface[f];
             choices.freeEdgesOnSurface = hasFreeEdge(f) && chordsOnSurface[f];
             if (hasEvenColumns(f)) choices.evenColumns = faceLines[f].forColumns();
@@ -1772,6 +1785,12 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     std::sort(result.failures.begin(), result.failures.end(),
               [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
+    if (freeSegments) {
+        freeSegments->assign(faceCount, 0);
+        for (size_t e = 0; e < model.edges.size(); ++e)
+            if (uses[e].size() == 1 && !model.edges[e].degenerated && !polylines[e].params.empty())
+                (*freeSegments)[uses[e][0].face] += polylines[e].params.size() - 1;
+    }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
@@ -1785,12 +1804,15 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
 // and 580 and 94 on its second; with 8 it kept the first.
 constexpr std::size_t kBorderShare = 10;
 
+// How many open edges per free segment a first mesh may keep before it is tessellated again
+// with finer cells at its free chords (tessellateModel).
+constexpr double kUndroppedShare = 1.1;
+
 TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
     if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
         throw std::invalid_argument("the tolerance must be a positive number, not " +
                                     std::to_string(options.tolerance));
     const auto start = std::chrono::steady_clock::now();
-    TessellationResult result = tessellateOnce(model, options, false);
     // A lone face (LoneFaces.hpp) whose region is its whole frame box is tessellated again on
     // its own with its free edges as its curve uses: no trimming share, the cells at its border
     // bounded for corners on their sides, but the points its cells cut on its free chords stay
@@ -1807,13 +1829,15 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // costs about as much as the first (MAT.brep at relative 1e-3: 0.4 s more), never won on
     // the sample models (MAT.brep: 15,976 triangles and 244 open edges at 1e-3, 446 on the
     // second try; the revolved profile: 5,983 and 55, 133).
-    // the faces listed as failed (the retries below list none)
-    std::vector<char> failed(model.faces.size(), 0);
-    for (const auto& failure : result.failures)
-        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
-            failed[failure.face - 1] = 1;
-    if (options.mode == ErrorMode::Guaranteed && options.retryLoneFaces &&
-        options.freeEdgesTakeSurfaceShare && !options.keepFaceVertices) {
+    auto retryLoneFaces = [&](TessellationResult& result) {
+        if (options.mode != ErrorMode::Guaranteed || !options.retryLoneFaces ||
+            !options.freeEdgesTakeSurfaceShare || options.keepFaceVertices)
+            return;
+        // the faces listed as failed (the retries below list none)
+        std::vector<char> failed(model.faces.size(), 0);
+        for (const auto& failure : result.failures)
+            if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
+                failed[failure.face - 1] = 1;
         TessellationOptions alone = options;
         alone.progress = nullptr;
         for (const int f : loneBoxFaces(model, kExactEdge * options.tolerance)) {
@@ -1830,7 +1854,47 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 (after == before && retried.mesh.triangles.size() < trianglesBefore))
                 replaceFaceTriangles(result.mesh, f + 1, retried.mesh);
         }
+    };
+    std::vector<std::size_t> freeSegments;
+    TessellationResult result = tessellateOnce(model, options, false, 0, {}, &freeSegments);
+    retryLoneFaces(result);
+    // A face whose free chords keep more than a tenth more open edges than their segments
+    // (points that cell sides left on them and the removal could not drop) is tessellated
+    // again with its cells at those chords bounded to half the surface share
+    // (FaceTessellator::kFreeChordTarget), which leaves the removal the other half of their
+    // share (Leaf::slack). The model's second mesh (its lone faces retried as above) is kept
+    // where it drops a larger share of the open edges than it adds of triangles: OpenCASCADE's
+    // MAT.brep (one face of 77 x 80 spans, four free edges) at relative 1e-3 takes 11,433
+    // triangles and 145 open edges instead of 10,560 and 212 (BRepMesh at the same deflection:
+    // 8,060 and 196), at 1e-4 82,357 and 463 instead of 79,936 and 722 (91,762 and 512).
+    if (options.mode == ErrorMode::Guaranteed && options.refineAtFreeChords &&
+        options.freeEdgesTakeSurfaceShare && freeSegments.size() == model.faces.size()) {
+        const std::vector<std::size_t> openByFace =
+            meshOpenEdgesByFace(result.mesh, model.faces.size());
+        std::vector<char> refine(model.faces.size(), 0);
+        for (std::size_t f = 0; f < model.faces.size(); ++f)
+            refine[f] = freeSegments[f] > 0 &&
+                        double(openByFace[f]) > kUndroppedShare * double(freeSegments[f]);
+        if (std::find(refine.begin(), refine.end(), 1) != refine.end()) {
+            TessellationResult refined = tessellateOnce(model, options, false, 0, refine);
+            retryLoneFaces(refined);
+            auto openEdges = [&](const Mesh& mesh) {
+                const auto byFace = meshOpenEdgesByFace(mesh, model.faces.size());
+                return double(std::accumulate(byFace.begin(), byFace.end(), std::size_t(0)));
+            };
+            const double open = openEdges(result.mesh);
+            const double fewerOpen = open - openEdges(refined.mesh);
+            const double moreTriangles =
+                double(refined.mesh.triangles.size()) - double(result.mesh.triangles.size());
+            if (refined.failures.size() <= result.failures.size() && fewerOpen > 0 &&
+                fewerOpen / open >= moreTriangles / double(result.mesh.triangles.size()))
+                result = std::move(refined);
+        }
     }
+    std::vector<char> failed(model.faces.size(), 0);
+    for (const auto& failure : result.failures)
+        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
+            failed[failure.face - 1] = 1;
     // single-precision readers of the mesh measure needles right (LargestAngleFirst.hpp)
     startAtLargestAngle(result.mesh);
     for (size_t f = 0; f < model.faces.size(); ++f)

@@ -61,6 +61,10 @@ struct TessellationOptions {
     // of the surface share (Leaf::slack in FaceTessellator, removeOpenBoundaryPoints). Off, only
     // the share gap and openChords: to measure what the slack saves.
     bool openPointsSpendCellSlack = true;
+    // A model whose free chords keep many of those points is tessellated again with finer cells
+    // at them, and kept where that drops a larger share of its open edges than it adds of
+    // triangles (tessellateModel). Off only to measure.
+    bool refineAtFreeChords = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;

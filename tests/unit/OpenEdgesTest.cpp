@@ -303,9 +303,9 @@ TEST(OpenEdges, ChordPointIsDroppedWithinTheCellsSlack) {
 // On OpenCASCADE's samples whose faces have free edges, the cells' slack drops more of the
 // points on the free chords: MAT.brep (one bumpy face of 77 x 80 spans) at relative 1e-3 keeps
 // 212 open edges instead of 246 (BRepMesh at the same deflection: 196), shell1.brep at 1e-4
-// 155 instead of 167 (95). Both meshes are verified within the tolerance by the tests of cells
-// across spans and of a pole's row (FittedSampleFaceTakesFewerCellsThanSpans,
-// AnEndAtAPoleKeepsItsSide).
+// 155 instead of 167 (95), each tessellated once (no finer cells at the free chords). The
+// meshes are verified within the tolerance by the tests of cells across spans and of a pole's
+// row (FittedSampleFaceTakesFewerCellsThanSpans, AnEndAtAPoleKeepsItsSide).
 TEST(OpenEdges, CellsSlackDropsMorePointsOnFreeChords) {
     for (const auto& [name, relative] :
          {std::pair<const char*, double>{"MAT.brep", 1e-3}, {"shell1.brep", 1e-4}}) {
@@ -314,6 +314,7 @@ TEST(OpenEdges, CellsSlackDropsMorePointsOnFreeChords) {
         const Model model = occ::importModel(*shape);
         TessellationOptions options;
         options.tolerance = relative * model.boundingBoxDiagonal;
+        options.refineAtFreeChords = false;
         const auto withSlack = tessellateModel(model, options);
         options.openPointsSpendCellSlack = false;
         const auto without = tessellateModel(model, options);
@@ -323,6 +324,32 @@ TEST(OpenEdges, CellsSlackDropsMorePointsOnFreeChords) {
             openEdges(without.mesh.positions, without.mesh.triangles, options.tolerance);
         EXPECT_LT(double(ours), 0.95 * double(before)) << name << ": " << ours << " vs " << before;
         EXPECT_LE(withSlack.mesh.triangles.size(), without.mesh.triangles.size()) << name;
+    }
+}
+
+// Where the slack is not enough, the faces whose free chords keep many points are tessellated
+// again with their cells at those chords bounded to half the surface share, and the second mesh
+// kept where it drops a larger share of the open edges than it adds of triangles. MAT.brep at
+// relative 1e-3: 145 open edges and 11,433 triangles instead of 212 and 10,560 (BRepMesh at the
+// same deflection: 196 and 8,060); at 1e-4 463 and 82,357 instead of 722 and 79,936 (512 and
+// 91,762). The 1e-3 mesh is verified by FittedSampleFaceTakesFewerCellsThanSpans.
+TEST(OpenEdges, FinerCellsAtFreeChordsLeaveNoMoreOpenEdgesThanBRepMesh) {
+    const auto shape = test::sampleModel(test::kOpenCascadeSamples / "MAT.brep");
+    if (!shape) GTEST_SKIP() << "OpenCASCADE's samples not found";
+    const Model model = occ::importModel(*shape);
+    for (const double relative : {1e-3, 1e-4}) {
+        TessellationOptions options;
+        options.tolerance = relative * model.boundingBoxDiagonal;
+        const auto refined = tessellateModel(model, options);
+        options.refineAtFreeChords = false;
+        const auto once = tessellateModel(model, options);
+        const std::size_t ours =
+            openEdges(refined.mesh.positions, refined.mesh.triangles, options.tolerance);
+        EXPECT_LT(ours, openEdges(once.mesh.positions, once.mesh.triangles, options.tolerance))
+            << relative;
+        EXPECT_LE(ours, brepMeshOpenEdges(*shape, options.tolerance)) << relative;
+        EXPECT_LT(double(refined.mesh.triangles.size()), 1.1 * double(once.mesh.triangles.size()))
+            << relative;
     }
 }
 
