@@ -1868,7 +1868,10 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // triangles and 145 open edges instead of 10,560 and 212 (BRepMesh at the same deflection:
     // 8,060 and 196), at 1e-4 82,357 and 463 instead of 79,936 and 722 (91,762 and 512).
     if (options.mode == ErrorMode::Guaranteed && options.refineAtFreeChords &&
-        options.freeEdgesTakeSurfaceShare && freeSegments.size() == model.faces.size()) {
+        options.freeEdgesTakeSurfaceShare && freeSegments.size() == model.faces.size() &&
+        std::any_of(freeSegments.begin(), freeSegments.end(),
+                    [](std::size_t n) { return n > 0; })) {
+        // (a model without free edges skips the count of its open edges: a map of every side)
         const std::vector<std::size_t> openByFace =
             meshOpenEdgesByFace(result.mesh, model.faces.size());
         std::vector<char> refine(model.faces.size(), 0);
