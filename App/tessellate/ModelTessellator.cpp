@@ -150,6 +150,10 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     for (size_t e = 0; e < uses.size(); ++e)
         for (size_t u = 0; u < uses[e].size(); ++u)
             useIndex[{uses[e][u].face, uses[e][u].loop, uses[e][u].curve}] = static_cast<int>(u);
+    // an edge of one face alone (not a pole)
+    auto isFreeEdge = [&](std::size_t e) {
+        return uses[e].size() == 1 && !model.edges[e].degenerated;
+    };
 
     auto curveOf = [&](const EdgeUse& u) -> const TrimCurve& {
         return model.faces[u.face].loops[u.loop].curves[u.curve];
@@ -444,8 +448,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     std::vector<std::vector<char>> straightUse(model.edges.size());
     for (size_t e = 0; e < model.edges.size(); ++e)
         if ((uses[e].size() >= 2 && edgeShareGap[e] <= budget.shareGap) ||
-            (uses[e].size() == 1 && !model.edges[e].degenerated && boxRegion[uses[e][0].face] &&
-             exactEdge(int(e))))
+            (isFreeEdge(e) && boxRegion[uses[e][0].face] && exactEdge(int(e))))
             for (const auto& use : uses[e])
                 straightUse[e].push_back(curveOnSurface(use).straightInParameterPlane());
     auto curveStraight = [&](int f, int l, int c) {
@@ -528,8 +531,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     auto hasFreeEdge = [&](int f) {
         for (const auto& loop : model.faces[f].loops)
             for (const auto& curve : loop.curves)
-                if (uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated)
-                    return true;
+                if (isFreeEdge(curve.edge)) return true;
         return false;
     };
     for (int f = 0; f < faceCount && options.freeEdgesTakeSurfaceShare; ++f) {
@@ -918,12 +920,17 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     forEachIndex(size_t(0), model.edges.size(), discretizeOnce);
     // The second tessellation of a lone face (tessellateModel) stops here where its free edges
     // already have more segments than the first one's open edges: cell sides only add points.
-    if (freeEdgesAsCurveUses && openEdgeLimit > 0) {
-        std::size_t freeSegments = 0;
+    // the segments of each face's free edges, as discretised so far
+    auto freeSegmentsByFace = [&] {
+        std::vector<std::size_t> segments(faceCount, 0);
         for (size_t e = 0; e < model.edges.size(); ++e)
-            if (uses[e].size() == 1 && !model.edges[e].degenerated && !polylines[e].params.empty())
-                freeSegments += polylines[e].params.size() - 1;
-        if (freeSegments > openEdgeLimit) {
+            if (isFreeEdge(e) && !polylines[e].params.empty())
+                segments[uses[e][0].face] += polylines[e].params.size() - 1;
+        return segments;
+    };
+    if (freeEdgesAsCurveUses && openEdgeLimit > 0) {
+        const auto segments = freeSegmentsByFace();
+        if (std::accumulate(segments.begin(), segments.end(), std::size_t(0)) > openEdgeLimit) {
             result.failures.push_back({1, "more segments on its free edges than before"});
             return result;
         }
@@ -1477,8 +1484,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
                 options.freeEdgesTakeSurfaceShare && !chordsOnSurface[f]) {
                 for (const auto& loop : model.faces[f].loops)
                     for (const auto& curve : loop.curves)
-                        if (uses[curve.edge].size() == 1 && !model.edges[curve.edge].degenerated)
-                            choices.freeEdges.push_back(curve.edge);
+                        if (isFreeEdge(curve.edge)) choices.freeEdges.push_back(curve.edge);
                 std::sort(choices.freeEdges.begin(), choices.freeEdges.end());
             }
             choices.filledCellsBySides = !hasFreeEdge(f) || chordsOnSurface[f];
@@ -1785,12 +1791,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     std::sort(result.failures.begin(), result.failures.end(),
               [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
-    if (freeSegments) {
-        freeSegments->assign(faceCount, 0);
-        for (size_t e = 0; e < model.edges.size(); ++e)
-            if (uses[e].size() == 1 && !model.edges[e].degenerated && !polylines[e].params.empty())
-                (*freeSegments)[uses[e][0].face] += polylines[e].params.size() - 1;
-    }
+    if (freeSegments) *freeSegments = freeSegmentsByFace();
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
@@ -1829,15 +1830,19 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // costs about as much as the first (MAT.brep at relative 1e-3: 0.4 s more), never won on
     // the sample models (MAT.brep: 15,976 triangles and 244 open edges at 1e-3, 446 on the
     // second try; the revolved profile: 5,983 and 55, 133).
-    auto retryLoneFaces = [&](TessellationResult& result) {
-        if (options.mode != ErrorMode::Guaranteed || !options.retryLoneFaces ||
-            !options.freeEdgesTakeSurfaceShare || options.keepFaceVertices)
-            return;
-        // the faces listed as failed (the retries below list none)
+    // the faces a result lists as failed (the lone faces' retries list none)
+    auto failedFaces = [&](const TessellationResult& result) {
         std::vector<char> failed(model.faces.size(), 0);
         for (const auto& failure : result.failures)
             if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
                 failed[failure.face - 1] = 1;
+        return failed;
+    };
+    auto retryLoneFaces = [&](TessellationResult& result) {
+        if (options.mode != ErrorMode::Guaranteed || !options.retryLoneFaces ||
+            !options.freeEdgesTakeSurfaceShare || options.keepFaceVertices)
+            return;
+        const std::vector<char> failed = failedFaces(result);
         TessellationOptions alone = options;
         alone.progress = nullptr;
         for (const int f : loneBoxFaces(model, kExactEdge * options.tolerance)) {
@@ -1881,12 +1886,12 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         if (std::find(refine.begin(), refine.end(), 1) != refine.end()) {
             TessellationResult refined = tessellateOnce(model, options, false, 0, refine);
             retryLoneFaces(refined);
-            auto openEdges = [&](const Mesh& mesh) {
-                const auto byFace = meshOpenEdgesByFace(mesh, model.faces.size());
-                return double(std::accumulate(byFace.begin(), byFace.end(), std::size_t(0)));
+            auto sum = [](const std::vector<std::size_t>& counts) {
+                return double(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
             };
-            const double open = openEdges(result.mesh);
-            const double fewerOpen = open - openEdges(refined.mesh);
+            const double open = sum(openByFace);
+            const double fewerOpen =
+                open - sum(meshOpenEdgesByFace(refined.mesh, model.faces.size()));
             const double moreTriangles =
                 double(refined.mesh.triangles.size()) - double(result.mesh.triangles.size());
             if (refined.failures.size() <= result.failures.size() && fewerOpen > 0 &&
@@ -1894,10 +1899,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 result = std::move(refined);
         }
     }
-    std::vector<char> failed(model.faces.size(), 0);
-    for (const auto& failure : result.failures)
-        if (failure.face >= 1 && failure.face <= static_cast<int>(failed.size()))
-            failed[failure.face - 1] = 1;
+    const std::vector<char> failed = failedFaces(result);
     // single-precision readers of the mesh measure needles right (LargestAngleFirst.hpp)
     startAtLargestAngle(result.mesh);
     for (size_t f = 0; f < model.faces.size(); ++f)
