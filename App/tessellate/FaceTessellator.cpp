@@ -797,6 +797,28 @@ bool FaceTessellator::touchesFreeChord(const std::array<cInt, 4>& cell) const {
     return false;
 }
 
+bool FaceTessellator::cutMeetsFreeChord(const std::array<cInt, 4>& cell, int direction,
+                                        cInt at) const {
+    // the cut from p to q against each chord a b, ends included
+    const ClipperLib::IntPoint p =
+        direction == 0 ? ClipperLib::IntPoint{at, cell[1]} : ClipperLib::IntPoint{cell[0], at};
+    const ClipperLib::IntPoint q =
+        direction == 0 ? ClipperLib::IntPoint{at, cell[3]} : ClipperLib::IntPoint{cell[2], at};
+    auto side = [](const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b,
+                   const ClipperLib::IntPoint& c) {
+        const double s =
+            double(b.X - a.X) * double(c.Y - a.Y) - double(b.Y - a.Y) * double(c.X - a.X);
+        return (s > 0) - (s < 0);
+    };
+    for (const auto& [a, b] : freeChords_) {
+        if (std::max(a.X, b.X) < std::min(p.X, q.X) || std::min(a.X, b.X) > std::max(p.X, q.X) ||
+            std::max(a.Y, b.Y) < std::min(p.Y, q.Y) || std::min(a.Y, b.Y) > std::max(p.Y, q.Y))
+            continue;
+        if (side(a, b, p) * side(a, b, q) <= 0 && side(p, q, a) * side(p, q, b) <= 0) return true;
+    }
+    return false;
+}
+
 void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                   CellDecisions& decisions) {
     leaves_.clear();
@@ -934,7 +956,8 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // a cell at a free chord, on a face asked to refine there, takes a smaller target
         // (kFreeChordTarget)
         const double target = node.full ? wholeCellTarget(budget_, mode_)
-                              : touchesFreeChord({r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1})
+                              : choices_.finerCellsAtFreeChords &&
+                                      touchesFreeChord({r.x0 - 1, r.y0 - 1, r.x1 + 1, r.y1 + 1})
                                   ? kFreeChordTarget * budget_.surface
                                   : budget_.surface;
         const bool trimmedCell = !node.full && !sidesOnly;
@@ -1003,6 +1026,8 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // widest band it may cut off
         bool sidesWouldDo = false;
         double widestBand = kWidestBand;
+        // the cell's bound where it was measured
+        double measured = kUnmeasured;
         if (decided) {
             if (known->second.settles) {
                 leaves_[node.index].leaf = true;
@@ -1024,7 +1049,8 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                         cellErrorBound(piece, mode_, target, false, choices_.flatCellsByDistance);
                 return *sides;
             };
-            const bool settles = bound.measure(mode_, trimmedCell) <= target;
+            measured = bound.measure(mode_, trimmedCell);
+            const bool settles = measured <= target;
             if (node.full && decisions.record)
                 decisions.byRect[key] = {settles, bound.splitDirection};
             if (settles) {
@@ -1072,6 +1098,31 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                        choices_.flatCellsByDistance, pieceFraction, mode_);
             if (node.full && decisions.record)
                 decisions.byRect[key].preferredDirection = preferredDirection;
+        }
+        // A middle cut that meets a free chord leaves a point on it: an open edge, which stays
+        // where the removal cannot drop it (removeOpenBoundaryPoints), and always where the
+        // chord is on the surface. Where the other halving meets none and lowers the bound by
+        // kAlongFreeChordGain, the cell is cut that way: a twisted cell at its free edge (a
+        // ruled face's rim) becomes a thin row along the chord, whose width its curvature
+        // alone sets.
+        if (choices_.cutsAlongFreeChords && choices_.middleSplits && !freeChords_.empty() && canU &&
+            canV && measured < kUnmeasured && !decided) {
+            const cInt middle[2] = {r.x0 + (r.x1 - r.x0 + 1) / 2, r.y0 + (r.y1 - r.y0 + 1) / 2};
+            const int other = 1 - preferredDirection;
+            if (cutMeetsFreeChord(key, preferredDirection, middle[preferredDirection]) &&
+                !cutMeetsFreeChord(key, other, middle[other])) {
+                const double half = double(middle[other] - (other == 0 ? r.x0 : r.y0)) /
+                                    double(other == 0 ? r.x1 - r.x0 : r.y1 - r.y0);
+                double worst = 0;
+                for (const auto& [t0, t1] : {std::pair{0.0, half}, std::pair{half, 1.0}}) {
+                    const BezierPatch h = other == 0 ? piece.restricted(t0, t1, 0, 1)
+                                                     : piece.restricted(0, 1, t0, t1);
+                    worst = std::max(worst, cellErrorBound(h, mode_, target, trimmedCell,
+                                                           choices_.flatCellsByDistance)
+                                                .measure(mode_, trimmedCell));
+                }
+                if (worst <= kAlongFreeChordGain * measured) preferredDirection = other;
+            }
         }
         // each axis's even columns' middle line where the cell holds two or more (the lines its
         // edges' points were put on)

@@ -31,10 +31,14 @@ struct CellChoices {
     bool flatCellsByDistance = true;
     bool middleSplits = true;
     bool openPointsSpendCellSlack = true;
-    // The face's free edges (model edge indices, sorted), where its cells at their chords take
-    // a smaller target (FaceTessellator::kFreeChordTarget); empty on a first tessellation, and
-    // on a second one for a face that needs none (tessellateModel).
+    // The face's free edges (model edge indices, sorted; guaranteed mode). A cell whose cut
+    // would leave a point on one of their chords is cut the other way where that lowers its
+    // bound enough (cutsAlongFreeChords).
     std::vector<int> freeEdges;
+    // On a second tessellation, for a face whose free chords kept many points: its cells at
+    // those chords take a smaller target (FaceTessellator::kFreeChordTarget; tessellateModel).
+    bool finerCellsAtFreeChords = false;
+    bool cutsAlongFreeChords = true;
     // A cell the region fills exactly (its boundary along the cell's sides) takes the bound
     // for corners on its sides. Not on a face with free edges: the points its cells leave
     // on their chords are dropped where the triangles change little
@@ -132,11 +136,18 @@ private:
     // share of the surface share: the points its sides leave on the chord are then dropped
     // more often, as its triangles leave the rest to that removal (Leaf::slack).
     static constexpr double kFreeChordTarget = 0.5;
+    // A cut along a free chord instead of across it must leave halves bounded to this share of
+    // the cell's bound (buildKdTree).
+    static constexpr double kAlongFreeChordGain = 0.75;
     // The chords of the face's free edges in the frame (setFreeChords), and whether a cell
     // (x0, y0, x1, y1) meets one of them.
     std::vector<std::array<ClipperLib::IntPoint, 2>> freeChords_;
     void setFreeChords(const std::vector<BoundaryLoop>& loops);
     bool touchesFreeChord(const std::array<ClipperLib::cInt, 4>& cell) const;
+    // Whether the cut of `cell` at `at` in `direction` (0: the line x = at) meets a free chord:
+    // the cut's ends on the cell's sides, or its crossing inside, become points of that chord.
+    bool cutMeetsFreeChord(const std::array<ClipperLib::cInt, 4>& cell, int direction,
+                           ClipperLib::cInt at) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;

@@ -65,6 +65,10 @@ struct TessellationOptions {
     // at them, and kept where that drops a larger share of its open edges than it adds of
     // triangles (tessellateModel). Off only to measure.
     bool refineAtFreeChords = true;
+    // A kd-tree cell whose middle cut would leave a point on a free edge's chord is cut the
+    // other way where that lowers its bound nearly as much (FaceTessellator). Off only to
+    // measure.
+    bool cutsAlongFreeChords = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
     bool keepFaceVertices = false;
