@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -38,6 +39,10 @@ double regionShareOfBox(const TrimmedSurface& face, const std::array<KdTreeGrid,
 // bug33398.step's half cones cut by a B-spline (share 0.55) took 48 triangles with columns, 42
 // without. Tried: 0.5, 0.7, 0.8, 0.9.
 inline constexpr double kEvenColumnsRegionShare = 0.8;
+
+// The most spans across an axis over which its columns are cut across into rows
+// (evenColumnLines); beyond, the kd-tree's halvings.
+inline constexpr std::size_t kMostSpansCutAcross = 16;
 
 // An edge of a face that runs along a kd-tree axis of it (an iso-line: a cylinder's circle),
 // which ModelTessellator discretises on that face's column lines: its curves on all its faces
