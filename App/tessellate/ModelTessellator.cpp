@@ -1926,9 +1926,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     // (FaceTessellator::kFreeChordTarget), which leaves the removal the other half of their
     // share (Leaf::slack). The model's second mesh (its lone faces retried as above) is kept
     // where it drops a larger share of the open edges than it adds of triangles: OpenCASCADE's
-    // MAT.brep (one face of 77 x 80 spans, four free edges) at relative 1e-3 takes 11,433
-    // triangles and 145 open edges instead of 10,560 and 212 (BRepMesh at the same deflection:
-    // 8,060 and 196), at 1e-4 82,357 and 463 instead of 79,936 and 722 (91,762 and 512).
+    // MAT.brep (one face of 77 x 80 spans, four free edges) at relative 1e-3 takes 11,324
+    // triangles and 146 open edges instead of 10,470 and 216 (BRepMesh at the same deflection:
+    // 8,060 and 196), at 1e-4 80,187 and 455 instead of 78,074 and 726 (91,762 and 512).
     if (options.mode == ErrorMode::Guaranteed && options.refineAtFreeChords &&
         options.freeEdgesTakeSurfaceShare && freeSegments.size() == model.faces.size() &&
         std::any_of(freeSegments.begin(), freeSegments.end(),

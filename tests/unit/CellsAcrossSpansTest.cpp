@@ -233,8 +233,8 @@ TEST(CellsAcrossSpans, SphereOfManySpansKeepsItsTips) {
 
 // OpenCASCADE's sample MAT.brep (occt-misc, which libocct-foundation-dev depends on): one
 // bumpy face of 77 x 80 bicubic spans, far smaller than it bends at relative 1e-3. A cell a
-// span took 15,976 triangles there; cells across spans take 10,560 (BRepMesh at the same
-// deflection: 8,060), and 11,433 with finer cells at its free chords for fewer open edges
+// span took 15,976 triangles there; cells across spans take 10,470 (BRepMesh at the same
+// deflection: 8,060), and 11,324 with finer cells at its free chords for fewer open edges
 // (TessellationOptions::refineAtFreeChords), within the tolerance.
 TEST(CellsAcrossSpans, FittedSampleFaceTakesFewerCellsThanSpans) {
     const std::filesystem::path path = "/usr/share/opencascade/data/occ/MAT.brep";

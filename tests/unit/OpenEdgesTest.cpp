@@ -337,8 +337,8 @@ TEST(OpenEdges, CellsSlackDropsMorePointsOnFreeChords) {
 // Where the slack is not enough, the faces whose free chords keep many points are tessellated
 // again with their cells at those chords bounded to half the surface share, and the second mesh
 // kept where it drops a larger share of the open edges than it adds of triangles. MAT.brep at
-// relative 1e-3: 145 open edges and 11,433 triangles instead of 212 and 10,560 (BRepMesh at the
-// same deflection: 196 and 8,060); at 1e-4 463 and 82,357 instead of 722 and 79,936 (512 and
+// relative 1e-3: 146 open edges and 11,324 triangles instead of 216 and 10,470 (BRepMesh at the
+// same deflection: 196 and 8,060); at 1e-4 455 and 80,187 instead of 726 and 78,074 (512 and
 // 91,762). The 1e-3 mesh is verified by FittedSampleFaceTakesFewerCellsThanSpans.
 TEST(OpenEdges, FinerCellsAtFreeChordsLeaveNoMoreOpenEdgesThanBRepMesh) {
     const auto shape = test::sampleModel(test::kOpenCascadeSamples / "MAT.brep");
