@@ -606,7 +606,12 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     // in guaranteed mode it takes them too (wing.brep at relative 1e-3: 734 triangles instead
     // of 857, 36 open edges instead of 37); the approximate mode's estimate went past the
     // tolerance more with them (wing.brep at 1e-3: 1.09 T instead of 0.75 T), and keeps its
-    // halvings there.
+    // halvings there. Such a face takes no columns cut across into rows, whose rows are tested
+    // as cells filled to their sides: the generated freeform patch at 1e-3 and 1e-4 took 1,654
+    // and 11,374 triangles with them, 1,484 and 10,668 without (open edges 86 -> 84 and
+    // 264 -> 266), the revolved profile 5,983 and 51,229, then 5,809 and 48,739 (55 and 169
+    // both ways); no other model changed but the ruled face at 1e-4 (8,423 -> 8,385 triangles,
+    // 287 -> 289 open edges).
     // An edge that runs along an axis of such a face and is straight in another face's (u, v)
     // is cut by that face's kd-tree too: the two axes take the same columns, the largest of
     // their needs, on the same frame, or neither takes any (bottle.brep's cylinders alone,
@@ -801,10 +806,11 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
         forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
-                lines[k] = evenColumnLines(
-                    model.faces[f], *faceLines[f].forColumns(), nodes[k] % 2,
-                    faceBudgets[f].surface, options.mode, options.flatCellsByDistance,
-                    options.evenColumnsCutAcross, options.gradedColumns, chords[k]);
+                lines[k] = evenColumnLines(model.faces[f], *faceLines[f].forColumns(), nodes[k] % 2,
+                                           faceBudgets[f].surface, options.mode,
+                                           options.flatCellsByDistance,
+                                           options.evenColumnsCutAcross && !hasFreeEdge(f),
+                                           options.gradedColumns, chords[k]);
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
                 lines[k].assign(intervals.size() - 1, {});
