@@ -401,7 +401,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
     // shapes, OpenCASCADE's other samples and 21 FreeCAD shapes but Motor-c.brep at 1e-4
     // (30,492 -> 30,500); with 8 spans the pipe along a spline and Bottom.brep changed too
     // (-2.6% and +0.2%).
-    const std::size_t spansAcross = grids[1 - axis].intervals().size() - 1;
+    cutAcross = cutAcross && grids[1 - axis].intervals().size() - 1 <= kMostSpansCutAcross;
     for (std::size_t i = 0; i + 1 < intervals.size(); ++i) {
         const std::int64_t a = intervals[i], b = intervals[i + 1];
         if (columnSettles(a, b, 1, 0)) {
@@ -419,7 +419,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& fac
         }
         if (count > 0)
             lines[i] = KdTreeGrid::equalColumnLines(a, b, count);
-        else if (cutAcross && spansAcross <= kMostSpansCutAcross)
+        else if (cutAcross)
             lines[i] = KdTreeGrid::equalColumnLines(a, b, columnsCutAcross(a, b));
     }
     return lines;

@@ -797,28 +797,6 @@ bool FaceTessellator::touchesFreeChord(const std::array<cInt, 4>& cell) const {
     return false;
 }
 
-bool FaceTessellator::cutMeetsFreeChord(const std::array<cInt, 4>& cell, int direction,
-                                        cInt at) const {
-    // the cut from p to q against each chord a b, ends included
-    const ClipperLib::IntPoint p =
-        direction == 0 ? ClipperLib::IntPoint{at, cell[1]} : ClipperLib::IntPoint{cell[0], at};
-    const ClipperLib::IntPoint q =
-        direction == 0 ? ClipperLib::IntPoint{at, cell[3]} : ClipperLib::IntPoint{cell[2], at};
-    auto side = [](const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b,
-                   const ClipperLib::IntPoint& c) {
-        const double s =
-            double(b.X - a.X) * double(c.Y - a.Y) - double(b.Y - a.Y) * double(c.X - a.X);
-        return (s > 0) - (s < 0);
-    };
-    for (const auto& [a, b] : freeChords_) {
-        if (std::max(a.X, b.X) < std::min(p.X, q.X) || std::min(a.X, b.X) > std::max(p.X, q.X) ||
-            std::max(a.Y, b.Y) < std::min(p.Y, q.Y) || std::min(a.Y, b.Y) > std::max(p.Y, q.Y))
-            continue;
-        if (side(a, b, p) * side(a, b, q) <= 0 && side(p, q, a) * side(p, q, b) <= 0) return true;
-    }
-    return false;
-}
-
 void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                   CellDecisions& decisions) {
     leaves_.clear();
@@ -1109,8 +1087,14 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             canV && measured < kUnmeasured && !decided) {
             const cInt middle[2] = {r.x0 + (r.x1 - r.x0 + 1) / 2, r.y0 + (r.y1 - r.y0 + 1) / 2};
             const int other = 1 - preferredDirection;
-            if (cutMeetsFreeChord(key, preferredDirection, middle[preferredDirection]) &&
-                !cutMeetsFreeChord(key, other, middle[other])) {
+            // the middle cut in `direction` as a cell of no width: its ends on the cell's sides,
+            // or its crossing inside, become points of the chords it meets
+            auto cutMeetsFreeChord = [&](int direction) {
+                const cInt at = middle[direction];
+                return touchesFreeChord(direction == 0 ? std::array<cInt, 4>{at, r.y0, at, r.y1}
+                                                       : std::array<cInt, 4>{r.x0, at, r.x1, at});
+            };
+            if (cutMeetsFreeChord(preferredDirection) && !cutMeetsFreeChord(other)) {
                 const double half = double(middle[other] - (other == 0 ? r.x0 : r.y0)) /
                                     double(other == 0 ? r.x1 - r.x0 : r.y1 - r.y0);
                 double worst = 0;

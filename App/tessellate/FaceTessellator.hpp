@@ -31,9 +31,10 @@ struct CellChoices {
     bool flatCellsByDistance = true;
     bool middleSplits = true;
     bool openPointsSpendCellSlack = true;
-    // The face's free edges (model edge indices, sorted; guaranteed mode). A cell whose cut
-    // would leave a point on one of their chords is cut the other way where that lowers its
-    // bound enough (cutsAlongFreeChords).
+    // The face's free edges (model edge indices, sorted; guaranteed mode, and only where one of
+    // the two choices below asks for their chords). A cell whose cut would leave a point on one
+    // of their chords is cut the other way where that lowers its bound enough
+    // (cutsAlongFreeChords).
     std::vector<int> freeEdges;
     // On a second tessellation, for a face whose free chords kept many points: its cells at
     // those chords take a smaller target (FaceTessellator::kFreeChordTarget; tessellateModel).
@@ -140,14 +141,10 @@ private:
     // the cell's bound (buildKdTree).
     static constexpr double kAlongFreeChordGain = 0.75;
     // The chords of the face's free edges in the frame (setFreeChords), and whether a cell
-    // (x0, y0, x1, y1) meets one of them.
+    // (x0, y0, x1, y1) meets one of them (a cell of no width: a segment).
     std::vector<std::array<ClipperLib::IntPoint, 2>> freeChords_;
     void setFreeChords(const std::vector<BoundaryLoop>& loops);
     bool touchesFreeChord(const std::array<ClipperLib::cInt, 4>& cell) const;
-    // Whether the cut of `cell` at `at` in `direction` (0: the line x = at) meets a free chord:
-    // the cut's ends on the cell's sides, or its crossing inside, become points of that chord.
-    bool cutMeetsFreeChord(const std::array<ClipperLib::cInt, 4>& cell, int direction,
-                           ClipperLib::cInt at) const;
     std::unique_ptr<Frame> frame_;
     std::vector<Leaf> leaves_;
     bool toleranceReached_ = true;

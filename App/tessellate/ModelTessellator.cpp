@@ -167,6 +167,11 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     auto isFreeEdge = [&](std::size_t e) {
         return uses[e].size() == 1 && !model.edges[e].degenerated;
     };
+    // only a model with a free edge is tessellated a second time (tessellateModel): the others
+    // neither key nor keep their columns
+    bool anyFreeEdge = false;
+    for (size_t e = 0; e < uses.size() && !anyFreeEdge; ++e) anyFreeEdge = isFreeEdge(e);
+    if (!anyFreeEdge) columnMemo = nullptr;
 
     auto curveOf = [&](const EdgeUse& u) -> const TrimCurve& {
         return model.faces[u.face].loops[u.loop].curves[u.curve];
@@ -1526,12 +1531,6 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
             choices.flatCellsByDistance = options.flatCellsByDistance;
             choices.middleSplits = options.middleSplits;
             choices.openPointsSpendCellSlack = options.openPointsSpendCellSlack;
-            if (options.mode == ErrorMode::Guaranteed && options.freeEdgesTakeSurfaceShare) {
-                for (const auto& loop : model.faces[f].loops)
-                    for (const auto& curve : loop.curves)
-                        if (isFreeEdge(curve.edge)) choices.freeEdges.push_back(curve.edge);
-                std::sort(choices.freeEdges.begin(), choices.freeEdges.end());
-            }
             // A face asked to refine at its free chords takes finer cells there, where the
             // removal may drop their points (not on chords on the surface, where every point
             // stays), and, as a lone face tried with its free edges as curve uses, its cells
@@ -1543,6 +1542,13 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
             choices.finerCellsAtFreeChords = refine && !chordsOnSurface[f];
             choices.cutsAlongFreeChords =
                 options.cutsAlongFreeChords && (refine || freeEdgesAsCurveUses);
+            if (options.mode == ErrorMode::Guaranteed && options.freeEdgesTakeSurfaceShare &&
+                (choices.finerCellsAtFreeChords || choices.cutsAlongFreeChords)) {
+                for (const auto& loop : model.faces[f].loops)
+                    for (const auto& curve : loop.curves)
+                        if (isFreeEdge(curve.edge)) choices.freeEdges.push_back(curve.edge);
+                std::sort(choices.freeEdges.begin(), choices.freeEdges.end());
+            }
             choices.filledCellsBySides = !hasFreeEdge(f) || chordsOnSurface[f];
             choices.freeEdgesOnSurface = hasFreeEdge(f) && chordsOnSurface[f];
             if (hasEvenColumns(f)) choices.evenColumns = faceLines[f].forColumns();
