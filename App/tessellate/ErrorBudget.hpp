@@ -79,6 +79,8 @@ struct ErrorBudget {
     // by, beyond the half share gap that the removal may also spend (withFreeEdges).
     double openChords = 0;
 
+    bool operator==(const ErrorBudget&) const = default;
+
     // The trimming share: the chord approximation and the loop simplification together.
     double trimming() const { return lineApproximation + lineSimplification; }
 

@@ -15,6 +15,8 @@ struct BoundarySegmentOrigin {
     int segment = 0;
     bool forward = true;
     int use = 0;  // which of the edge's uses: a seam edge has two in the same face
+
+    bool operator==(const BoundarySegmentOrigin&) const = default;
 };
 
 // One corner of a face's boundary polygon in the face's (u, v) plane, carrying the id of the
@@ -26,6 +28,8 @@ struct BoundaryPoint {
     // so that it lies exactly on the cell side and makes no second crossing.
     bool exact = false;
     std::int64_t x = 0, y = 0;
+
+    bool operator==(const BoundaryPoint&) const = default;
 };
 
 // A closed boundary polygon: segment i runs from points[i] to points[i+1] (cyclically) and
@@ -33,6 +37,8 @@ struct BoundaryPoint {
 struct BoundaryLoop {
     std::vector<BoundaryPoint> points;
     std::vector<BoundarySegmentOrigin> origins;
+
+    bool operator==(const BoundaryLoop&) const = default;
 };
 
 // A point where a kd-tree cell's side cuts a face's boundary between two polygon corners. To keep

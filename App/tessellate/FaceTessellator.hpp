@@ -55,6 +55,8 @@ struct CellChoices {
     // The face's kd-tree lines with even columns (KdTreeGrid::setEvenColumns), as its edges were
     // discretised on them; used where their frame is this face's.
     std::optional<std::array<KdTreeGrid, 2>> evenColumns;
+
+    bool operator==(const CellChoices&) const = default;
 };
 
 // Tessellates one trimmed face (paper sections 5.2 to 8): a kd-tree over the bounding box of
@@ -81,6 +83,11 @@ public:
     FaceMesh triangulate(const std::vector<BoundaryLoop>& loops,
                          const std::vector<Point3>& sharedPositions,
                          const std::vector<double>& sharedOffsets);
+    // Whether the face has its kd-tree: findCrossings builds it, but for a face in a plane or
+    // on a cylinder whose loops need none; triangulate then builds it only where the completed
+    // loops still need one, and changes nothing else. So a face that had its kd-tree after
+    // findCrossings, or has none still, is as findCrossings left it, whatever was triangulated.
+    bool hasKdTree() const { return !leaves_.empty(); }
 
 private:
     // the kd-tree over the region (both orders of the even lines where that matters)

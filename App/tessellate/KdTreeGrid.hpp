@@ -101,6 +101,8 @@ public:
     double scale() const { return scale_; }
     double parameterAt(std::int64_t step) const { return parameterOf(step); }
 
+    bool operator==(const KdTreeGrid&) const = default;
+
 private:
     // the first halving of [a, b] (frame steps) that lands in [lo, hi], halving towards it
     std::optional<double> halvingWithin(std::int64_t a, std::int64_t b, std::int64_t lo,
