@@ -33,6 +33,8 @@ struct FaceKdTreeLines {
     // 46 -> 28 each; BRepMesh_IncrementalMesh 416, its discs 29).
     std::array<std::optional<KdTreeGrid>, 2> hull;
 
+    bool operator==(const FaceKdTreeLines&) const = default;
+
     // both axes, as FaceTessellator's even columns need them
     std::optional<std::array<KdTreeGrid, 2>> both() const;
     // Both axes where known, otherwise the hull's grid in place of the one that is not (only

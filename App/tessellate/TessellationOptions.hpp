@@ -69,10 +69,10 @@ struct TessellationOptions {
     // other way where that lowers its bound nearly as much (FaceTessellator). Off only to
     // measure.
     bool cutsAlongFreeChords = true;
-    // That second tessellation takes from the first the work that no refined face changes:
-    // the even columns, and each other face's kd-tree and triangles where their inputs are the
-    // same (ColumnMemo, FaceTreeMemo in tessellateModel). Off only to measure, and to test that
-    // the mesh is the same.
+    // That second tessellation takes from the first the work that no refined face changes: the
+    // even columns, the edges' chords, and each other face's kd-tree and triangles, wherever
+    // their inputs are the same (FirstTessellationMemo in tessellateModel). Off only to
+    // measure, and to test that the mesh is the same.
     bool reuseFirstTessellation = true;
     // Keep each face's vertex set (TessellationResult::faceVertices): for benchmarks and tests
     // of the vertex evaluation.
