@@ -216,10 +216,10 @@ struct ErrorBudget {
     }
 
     // The split for one face whose triangles are within `surfaceNeed` of its surface without
-    // any kd-tree split beyond the Bezier spans (faceSurfaceNeed; a plane: 0). The surface
-    // share keeps a margin of 1e-2 of the tolerance over that need, so that rounding never
-    // makes the kd-tree split a plane. Where the need is more than the fixed surface share, the
-    // kd-tree splits, and the fixed split holds.
+    // any kd-tree split beyond the Bezier spans (faceSurfaceNeed; a plane: 0). In guaranteed
+    // mode the surface share keeps a margin of 1e-2 of the tolerance over that need, so that
+    // rounding never makes the kd-tree split a plane, and the rest goes to the chords. Where the
+    // need is more than the fixed surface share, the kd-tree splits, and the fixed split holds.
     static ErrorBudget forFace(double tolerance, ErrorMode mode, double surfaceNeed) {
         ErrorBudget b = of(tolerance, mode);
         const double surface = surfaceNeed + 1e-2 * tolerance;
@@ -228,9 +228,13 @@ struct ErrorBudget {
             b.surface = surface;
             b.setTrimming(std::max(b.trimming(), largestTrimming(tolerance, mode) - surface));
         } else if (surfaceNeed <= 0.05 * tolerance) {
-            // the approximate sources are not added (the surface share is the whole tolerance):
-            // only a face whose surface is all but flat gives its chords the largest share
-            b.surface = surface;
+            // The approximate sources are not added (the surface share is the whole tolerance):
+            // only a face whose surface is all but flat gives its chords the largest share, and
+            // it keeps its surface share. Held to its need, such a face's kd-tree cut its cells
+            // down to that need: the sides of the letters raised 0.002 mm on FreeCAD's IDF chip
+            // packages (ruled faces along B-spline outlines) took four times guaranteed mode's
+            // columns, 1206_SMD.stp at relative 1e-3 2,564 triangles instead of 1,180
+            // (guaranteed mode: 1,196).
             b.setTrimming(largestTrimming(tolerance, mode));
         }
         return b;
