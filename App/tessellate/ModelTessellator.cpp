@@ -1053,20 +1053,27 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     // (each edge is discretised by one thread at a time: its memo's entry is its own)
     auto discretize = [&](size_t e, const ErrorBudget& edge) {
         if (!memo) return discretizeAnew(e, edge);
-        EdgeMemo::Discretisation asked{
-            edge.lineApproximation, edge.lineSimplification, curveUse[e], {}, {}};
-        for (const auto& u : uses[e]) asked.lines.push_back(faceLines[u.face]);
+        // a discretisation kept for the same shares, curve use and faces' kd-tree lines
         auto same = [&](const EdgeMemo::Discretisation& d) {
-            return d.approximation == asked.approximation &&
-                   d.simplification == asked.simplification && d.curveUse == asked.curveUse &&
-                   d.lines == asked.lines;
+            if (d.approximation != edge.lineApproximation ||
+                d.simplification != edge.lineSimplification || d.curveUse != curveUse[e] ||
+                d.lines.size() != uses[e].size())
+                return false;
+            for (std::size_t k = 0; k < uses[e].size(); ++k)
+                if (!(d.lines[k] == faceLines[uses[e][k].face])) return false;
+            return true;
         };
-        if (take && e < memo->edges.edges.size())
+        if (take)
             for (const auto& known : memo->edges.edges[e])
                 if (same(known)) return known.params;
-        asked.params = discretizeAnew(e, edge);
-        if (keep) memo->edges.edges[e].push_back(asked);
-        return asked.params;
+        std::vector<double> params = discretizeAnew(e, edge);
+        if (keep) {
+            EdgeMemo::Discretisation kept{
+                edge.lineApproximation, edge.lineSimplification, curveUse[e], {}, params};
+            for (const auto& u : uses[e]) kept.lines.push_back(faceLines[u.face]);
+            memo->edges.edges[e].push_back(std::move(kept));
+        }
+        return params;
     };
 
     // 1. every edge discretised once for all its faces (sections 4 and 5.1), its points kept
