@@ -76,6 +76,39 @@ bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Poin
     return ((c1 > 0 && c2 < 0) || (c1 < 0 && c2 > 0)) && ((c3 > 0 && c4 < 0) || (c3 < 0 && c4 > 0));
 }
 
+// An old inner edge in the plane normal to the mean normal, with its ends' heights along it.
+struct PlanarEdge {
+    std::uint32_t a, b;
+    Point2 from, to;
+    double fromHeight, toHeight;
+};
+
+// An old inner edge laid out by one of its ends on the ring: `other` is the ring index of its
+// other end (-1: a dropped point).
+struct EdgeFromRing {
+    Point2 from, direction;
+    double fromHeight, heightChange;
+    int other;
+};
+
+// The search's arrays, kept per thread from one call to the next. A strip whose cells cut its
+// free chords at thousands of points tries tens of thousands of small rings, most of which fail
+// (the generated ruled face between a circle and an ellipse at relative 1e-4: 29,000 rings of 6
+// points on average), and allocating the n x n tables as rows was about half of each try.
+struct SearchTables {
+    std::vector<Point2> ringUv, ringPlanar;
+    std::vector<double> ringHeight;
+    std::vector<PlanarEdge> inner;
+    std::vector<int> innerRing;  // the ring indices of each inner edge's ends, two per edge
+    std::vector<EdgeFromRing> fromRing;
+    std::vector<std::size_t> fromRingStart;
+    std::vector<std::size_t> crossable;
+    std::vector<Box> sideBoxes;
+    // size x size, row-major
+    std::vector<double> diagonal, cost;
+    std::vector<std::size_t> split;
+};
+
 // The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that the points to drop
 // lie on) that least changes the surface, and that change. `old` are the triangles about those
 // points (their union is a disk whose boundary is the ring and the chord). Both the old
@@ -97,8 +130,10 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     const std::vector<Triangle>& old, const FaceMesh& mesh, const std::vector<char>& forbidden,
     double limit) {
     constexpr double kNever = std::numeric_limits<double>::infinity();
+    thread_local SearchTables tables;
     auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
-    std::vector<Point2> ringUv(ring.size());
+    std::vector<Point2>& ringUv = tables.ringUv;
+    ringUv.resize(ring.size());
     for (std::size_t i = 0; i < ring.size(); ++i) ringUv[i] = mesh.vertices[ring[i]].uv;
     auto uv = [&](std::size_t i) -> const Point2& { return ringUv[i]; };
     auto areaNormal = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) -> Vector3 {
@@ -131,8 +166,10 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         return Point2(across.dot(position(i)), along.dot(position(i)));
     };
     // the ring's points in the plane and their heights along the normal, once
-    std::vector<Point2> ringPlanar(size);
-    std::vector<double> ringHeight(size);
+    std::vector<Point2>& ringPlanar = tables.ringPlanar;
+    std::vector<double>& ringHeight = tables.ringHeight;
+    ringPlanar.resize(size);
+    ringHeight.resize(size);
     for (std::size_t i = 0; i < size; ++i) {
         ringPlanar[i] = planar(ring[i]);
         ringHeight[i] = normal.dot(position(ring[i]));
@@ -164,12 +201,8 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     const double minimumArea = 1e-14 * extent;
 
     // the old inner edges (each in two old triangles), in the plane with their heights
-    struct PlanarEdge {
-        std::uint32_t a, b;
-        Point2 from, to;
-        double fromHeight, toHeight;
-    };
-    std::vector<PlanarEdge> inner;
+    std::vector<PlanarEdge>& inner = tables.inner;
+    inner.clear();
     for (std::size_t t = 0; t < old.size(); ++t)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = old[t][k], b = old[t][(k + 1) % 3];
@@ -193,31 +226,37 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     // laid out by ring point in one array (read for every diagonal over it), each with the ring
     // index of its other end (-1: a dropped point); an edge between two ring points is listed
     // at both.
-    struct EdgeFromRing {
-        Point2 from, direction;
-        double fromHeight, heightChange;
-        int other;
-    };
     auto ringIndexOf = [&](std::uint32_t vertex) {
         const auto at = std::find(ring.begin(), ring.end(), vertex);
         return at == ring.end() ? -1 : static_cast<int>(at - ring.begin());
     };
-    std::vector<std::vector<EdgeFromRing>> byRingPoint(size);
-    for (const PlanarEdge& edge : inner) {
-        const int a = ringIndexOf(edge.a), b = ringIndexOf(edge.b);
-        EdgeFromRing laidOut{edge.from, edge.to - edge.from, edge.fromHeight,
-                             edge.toHeight - edge.fromHeight, b};
-        if (a >= 0) byRingPoint[a].push_back(laidOut);
-        laidOut.other = a;
-        if (b >= 0) byRingPoint[b].push_back(laidOut);
+    // counted by ring point, then laid out in the order of `inner` within each
+    std::vector<int>& innerRing = tables.innerRing;
+    innerRing.resize(2 * inner.size());
+    std::vector<std::size_t>& fromRingStart = tables.fromRingStart;
+    fromRingStart.assign(size + 1, 0);
+    for (std::size_t k = 0; k < inner.size(); ++k) {
+        innerRing[2 * k] = ringIndexOf(inner[k].a);
+        innerRing[2 * k + 1] = ringIndexOf(inner[k].b);
+        for (const int end : {innerRing[2 * k], innerRing[2 * k + 1]})
+            if (end >= 0) ++fromRingStart[static_cast<std::size_t>(end) + 1];
     }
-    std::vector<EdgeFromRing> fromRing;
-    std::vector<std::size_t> fromRingStart(size + 1, 0);
-    for (std::size_t k = 0; k < size; ++k) {
-        fromRingStart[k] = fromRing.size();
-        fromRing.insert(fromRing.end(), byRingPoint[k].begin(), byRingPoint[k].end());
+    for (std::size_t k = 0; k < size; ++k) fromRingStart[k + 1] += fromRingStart[k];
+    std::vector<EdgeFromRing>& fromRing = tables.fromRing;
+    fromRing.resize(fromRingStart[size]);
+    {
+        std::vector<std::size_t>& next = tables.split;  // a cursor per ring point, for now
+        next.assign(fromRingStart.begin(), fromRingStart.end() - 1);
+        for (std::size_t k = 0; k < inner.size(); ++k) {
+            const PlanarEdge& edge = inner[k];
+            const int a = innerRing[2 * k], b = innerRing[2 * k + 1];
+            EdgeFromRing laidOut{edge.from, edge.to - edge.from, edge.fromHeight,
+                                 edge.toHeight - edge.fromHeight, b};
+            if (a >= 0) fromRing[next[static_cast<std::size_t>(a)]++] = laidOut;
+            laidOut.other = a;
+            if (b >= 0) fromRing[next[static_cast<std::size_t>(b)]++] = laidOut;
+        }
     }
-    fromRingStart[size] = fromRing.size();
 
     // The ring's sides that a diagonal could cross in (u, v), with their boxes to pass over
     // those far from it. A side with every ring point on one side of its line (or on it) is
@@ -225,8 +264,10 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     // and measures them with the same cross products. On the strips along a free edge the
     // ring is all but convex and few sides are left (wing.brep: none): the test per diagonal
     // was a third of the search.
-    std::vector<std::size_t> crossable;
-    std::vector<Box> sideBoxes;
+    std::vector<std::size_t>& crossable = tables.crossable;
+    std::vector<Box>& sideBoxes = tables.sideBoxes;
+    crossable.clear();
+    sideBoxes.clear();
     for (std::size_t k = 0; k < m; ++k) {
         bool left = false, right = false;
         for (std::size_t w = 0; w < size && !(left && right); ++w) {
@@ -251,7 +292,8 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     };
 
     // the largest height difference along the diagonal (i, j), infinite where it may not be made
-    std::vector<std::vector<double>> diagonal(size, std::vector<double>(size, kNever));
+    std::vector<double>& diagonal = tables.diagonal;
+    diagonal.assign(size * size, kNever);
     for (std::size_t i = 0; i < size; ++i)
         for (std::size_t j = i + 2; j < size; ++j) {
             if (i == 0 && j == m) continue;  // the chord: the polygon's own side
@@ -301,12 +343,13 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
                           segmentsCross(uv(i), uv(j), uv(k), uv(k + 1));
             }
             if (crosses) continue;
-            diagonal[i][j] = diagonal[j][i] = largest;
+            diagonal[i * size + j] = diagonal[j * size + i] = largest;
         }
     // sides (consecutive points and the chord) cost nothing; diagonal is symmetric, so that the
     // search below reads (k, j) as the row j, in order
-    for (std::size_t i = 0; i < m; ++i) diagonal[i][i + 1] = diagonal[i + 1][i] = 0.0;
-    diagonal[0][m] = diagonal[m][0] = 0.0;
+    for (std::size_t i = 0; i < m; ++i)
+        diagonal[i * size + i + 1] = diagonal[(i + 1) * size + i] = 0.0;
+    diagonal[m] = diagonal[m * size] = 0.0;
     auto triangleValid = [&](std::size_t i, std::size_t k, std::size_t j) {
         if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return false;
         for (std::size_t w = 0; w < size; ++w) {
@@ -318,43 +361,45 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         }
         return facesNormal(ring[i], ring[k], ring[j]);
     };
-    // cost[i][j]: the least largest difference over triangulations of the sub-polygon i .. j,
-    // kept in both halves (cost[j][i] too) so that the search reads rows only
-    std::vector<std::vector<double>> cost(size, std::vector<double>(size, 0.0));
-    std::vector<std::vector<std::size_t>> split(size, std::vector<std::size_t>(size, 0));
+    // cost (i, j): the least largest difference over triangulations of the sub-polygon i .. j,
+    // kept in both halves (cost (j, i) too) so that the search reads rows only
+    std::vector<double>& cost = tables.cost;
+    std::vector<std::size_t>& split = tables.split;
+    cost.assign(size * size, 0.0);
+    split.assign(size * size, 0);
     for (std::size_t length = 2; length <= m; ++length)
         for (std::size_t i = 0; i + length <= m; ++i) {
             const std::size_t j = i + length;
             double best = kNever;
-            const double outer = diagonal[i][j];
+            const double outer = diagonal[i * size + j];
             if (outer != kNever) {
-                const std::vector<double>& fromI = cost[i];
-                const std::vector<double>& toJ = cost[j];
-                const std::vector<double>& diagonalsOfI = diagonal[i];
-                const std::vector<double>& diagonalsOfJ = diagonal[j];
+                const double* fromI = &cost[i * size];
+                const double* toJ = &cost[j * size];
+                const double* diagonalsOfI = &diagonal[i * size];
+                const double* diagonalsOfJ = &diagonal[j * size];
                 // no split costs less than the outer diagonal: once one reaches it, the first
                 // such split is the one kept
                 for (std::size_t k = i + 1; k < j && best > outer; ++k) {
                     const double c =
                         std::max({fromI[k], toJ[k], diagonalsOfI[k], diagonalsOfJ[k], outer});
-                    if (c < best && triangleValid(i, k, j)) best = c, split[i][j] = k;
+                    if (c < best && triangleValid(i, k, j)) best = c, split[i * size + j] = k;
                 }
             }
-            cost[i][j] = cost[j][i] = best;
+            cost[i * size + j] = cost[j * size + i] = best;
         }
-    if (cost[0][m] == kNever) return std::nullopt;
+    if (cost[m] == kNever) return std::nullopt;
     std::vector<Triangle> triangles;
     std::vector<std::pair<std::size_t, std::size_t>> pending{{0, m}};
     while (!pending.empty()) {
         const auto [i, j] = pending.back();
         pending.pop_back();
         if (j < i + 2) continue;
-        const std::size_t k = split[i][j];
+        const std::size_t k = split[i * size + j];
         triangles.push_back({ring[i], ring[k], ring[j]});
         pending.push_back({i, k});
         pending.push_back({k, j});
     }
-    return std::make_pair(std::move(triangles), std::max(cost[0][m], ontoChord));
+    return std::make_pair(std::move(triangles), std::max(cost[m], ontoChord));
 }
 
 // The search keeps n x n tables of the ring: a larger ring keeps its points (wing.brep's
