@@ -99,11 +99,13 @@ struct ColumnTest::Verdict {
 
 ColumnTest::ColumnTest(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis,
                        double target, ErrorMode mode, bool flatCellsByDistance,
-                       std::vector<ChordsAlong> chords)
+                       std::vector<ChordsAlong> chords,
+                       std::shared_ptr<const BezierPatchGrid> patches)
     : grid_(grids[axis]),
       other_(grids[1 - axis]),
       across_(grids[1 - axis].intervals()),
-      patches_(std::make_unique<BezierPatchGrid>(face.surface)),
+      patches_(patches ? std::move(patches)
+                       : std::make_shared<const BezierPatchGrid>(face.surface)),
       axis_(axis),
       target_(target),
       mode_(mode),
@@ -281,17 +283,16 @@ std::vector<std::int64_t> ColumnTest::greedyLines(std::int64_t a, std::int64_t b
     return lines;
 }
 
-std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& face,
-                                                       const std::array<KdTreeGrid, 2>& grids,
-                                                       int axis, double target, ErrorMode mode,
-                                                       bool flatCellsByDistance, bool cutAcross,
-                                                       bool graded,
-                                                       std::vector<ChordsAlong> chords) {
+std::vector<std::vector<std::int64_t>> evenColumnLines(
+    const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis, double target,
+    ErrorMode mode, bool flatCellsByDistance, bool cutAcross, bool graded,
+    std::vector<ChordsAlong> chords, std::shared_ptr<const BezierPatchGrid> patches) {
     const KdTreeGrid& grid = grids[axis];
     const std::vector<std::int64_t> intervals = grid.intervals();
     std::vector<std::vector<std::int64_t>> lines(intervals.size() - 1);
     if (!(target > 0)) return lines;
-    const ColumnTest test(face, grids, axis, target, mode, flatCellsByDistance, std::move(chords));
+    const ColumnTest test(face, grids, axis, target, mode, flatCellsByDistance, std::move(chords),
+                          std::move(patches));
     // whether column c of k equal ones over [a, b] settles over each span across as one cell
     auto columnSettles = [&](std::int64_t a, std::int64_t b, int k, int c) {
         return test.settles(KdTreeGrid::columnLine(a, b, k, c),

@@ -63,9 +63,12 @@ struct ChordsAlong {
 // filled to its sides, as the kd-tree bounds it.
 class ColumnTest {
 public:
+    // patches: the face's Bezier patches where the caller has them (FacePatchGrids), otherwise
+    // made here
     ColumnTest(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis,
                double target, ErrorMode mode, bool flatCellsByDistance,
-               std::vector<ChordsAlong> chords = {});
+               std::vector<ChordsAlong> chords = {},
+               std::shared_ptr<const BezierPatchGrid> patches = nullptr);
     ~ColumnTest();
     // as whole cells
     bool settles(std::int64_t x0, std::int64_t x1) const;
@@ -105,7 +108,7 @@ private:
 
     KdTreeGrid grid_, other_;  // copies: a test outlives the grids it was made with
     std::vector<std::int64_t> across_;
-    std::unique_ptr<BezierPatchGrid> patches_;
+    std::shared_ptr<const BezierPatchGrid> patches_;
     int axis_;
     double target_;
     ErrorMode mode_;
@@ -128,11 +131,9 @@ private:
 // 2,037 triangles instead of 1,758, and the cylinder sharing its circle 434 instead of 282). Faces
 // that share an edge along the axis take lines that settle on each of them (ModelTessellator),
 // so that their kd-trees cut it on the same lines.
-std::vector<std::vector<std::int64_t>> evenColumnLines(const TrimmedSurface& face,
-                                                       const std::array<KdTreeGrid, 2>& grids,
-                                                       int axis, double target, ErrorMode mode,
-                                                       bool flatCellsByDistance, bool cutAcross,
-                                                       bool graded = true,
-                                                       std::vector<ChordsAlong> chords = {});
+std::vector<std::vector<std::int64_t>> evenColumnLines(
+    const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis, double target,
+    ErrorMode mode, bool flatCellsByDistance, bool cutAcross, bool graded = true,
+    std::vector<ChordsAlong> chords = {}, std::shared_ptr<const BezierPatchGrid> patches = nullptr);
 
 }  // namespace nurbslod

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include "geometry/BezierPatchGrid.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -14,8 +15,8 @@ namespace {
 
 // Calls `visit` with each of the face's Bezier patches restricted to the bounding box of the
 // trimming curves' control points (which holds the curves: positive weights) until it returns
-// false; false where there is no such box.
-bool forEachTrimmedPiece(const TrimmedSurface& face,
+// false; false where there is no such box. `given`: the face's patches, if the caller has them.
+bool forEachTrimmedPiece(const TrimmedSurface& face, const BezierPatchGrid* given,
                          const std::function<bool(const BezierPatch&)>& visit) {
     double u0 = std::numeric_limits<double>::max(), v0 = u0, u1 = -u0, v1 = -u0;
     for (const auto& loop : face.loops)
@@ -29,7 +30,8 @@ bool forEachTrimmedPiece(const TrimmedSurface& face,
             }
     if (!(u1 >= u0) || !(v1 >= v0)) return false;  // no trimming curve
 
-    const BezierPatchGrid patches(face.surface);
+    std::optional<BezierPatchGrid> own;
+    const BezierPatchGrid& patches = given ? *given : own.emplace(face.surface);
     const auto& breaksU = patches.breakpointsU();
     const auto& breaksV = patches.breakpointsV();
     u0 = std::max(u0, breaksU.front()), u1 = std::min(u1, breaksU.back());
@@ -49,10 +51,11 @@ bool forEachTrimmedPiece(const TrimmedSurface& face,
 
 }  // namespace
 
-double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap) {
+double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap,
+                       const BezierPatchGrid* patches) {
     constexpr double kUnknown = std::numeric_limits<double>::infinity();
     double need = 0;
-    const bool known = forEachTrimmedPiece(face, [&](const BezierPatch& piece) {
+    const bool known = forEachTrimmedPiece(face, patches, [&](const BezierPatch& piece) {
         // the kd-tree's measure of a cell that the trimming curves may cross (the larger one)
         const double error = cellErrorBound(piece, mode, cap, true).measure(mode, true);
         need = error <= cap ? std::max(need, error) : kUnknown;
@@ -61,9 +64,10 @@ double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap) {
     return known ? need : kUnknown;
 }
 
-double surfaceCellEstimate(const TrimmedSurface& face, ErrorMode mode, double share) {
+double surfaceCellEstimate(const TrimmedSurface& face, ErrorMode mode, double share,
+                           const BezierPatchGrid* patches) {
     double cells = 0;
-    const bool known = forEachTrimmedPiece(face, [&](const BezierPatch& piece) {
+    const bool known = forEachTrimmedPiece(face, patches, [&](const BezierPatch& piece) {
         const double error = cellErrorBound(piece, mode, share, true).measure(mode, true);
         cells += std::isfinite(error) ? std::max(1.0, error / share) : 1.0;
         return true;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "geometry/BezierPatchGrid.hpp"
 #include "tessellate/TessellationOptions.hpp"
 #include "trim/TrimmedSurface.hpp"
 
@@ -12,12 +13,15 @@ namespace nurbslod {
 // curves: positive weights). A plane gives 0; a face that the kd-tree has to split gives a value
 // above `cap`, returned as soon as one patch shows it (the rest is not measured). ErrorBudget::
 // forFace gives what a face does not need for its surface to its trimming curves.
-double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap);
+// patches, where given, are the face's (FacePatchGrids); otherwise they are made here.
+double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap,
+                       const BezierPatchGrid* patches = nullptr);
 
 // About how many kd-tree cells the face's surface takes at surface share `share`: the bound
 // falls with the square of a cell's sides (paper section 5.2), so a patch whose bound is e
 // takes about e / share cells, at least one. Over the same patches as faceSurfaceNeed; 0 where
 // they are not known. Only for comparing faces and shares, not a count.
-double surfaceCellEstimate(const TrimmedSurface& face, ErrorMode mode, double share);
+double surfaceCellEstimate(const TrimmedSurface& face, ErrorMode mode, double share,
+                           const BezierPatchGrid* patches = nullptr);
 
 }  // namespace nurbslod

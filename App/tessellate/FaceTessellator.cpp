@@ -549,12 +549,14 @@ struct BoundaryIndex {
 }  // namespace
 
 FaceTessellator::FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget,
-                                 ErrorMode mode, const CellChoices& choices)
+                                 ErrorMode mode, const CellChoices& choices,
+                                 std::shared_ptr<const BezierPatchGrid> patches)
     : face_(face),
       budget_(budget),
       mode_(mode),
       choices_(choices),
-      patches_(face.surface),
+      patches_(patches ? std::move(patches)
+                       : std::make_shared<const BezierPatchGrid>(face.surface)),
       // flat to a twentieth of the surface share: the triangles in its plane spend at most twice
       // that of the share, which the kd-tree's cells would have spent in full
       plane_(facePlane(face.surface, 0.05 * budget.surface)) {
@@ -641,8 +643,8 @@ void FaceTessellator::setFrame(const std::vector<BoundaryLoop>& loops) {
             frame_->v0 = grid[1].low(), frame_->scaleV = grid[1].scale();
     }
     const std::vector<std::int64_t> borders[2] = {
-        spanBordersInFrame(frame_->u0, frame_->scaleU, patches_.breakpointsU()),
-        spanBordersInFrame(frame_->v0, frame_->scaleV, patches_.breakpointsV())};
+        spanBordersInFrame(frame_->u0, frame_->scaleU, patches_->breakpointsU()),
+        spanBordersInFrame(frame_->v0, frame_->scaleV, patches_->breakpointsV())};
     frame_->breaksX.assign(borders[0].begin(), borders[0].end());
     frame_->breaksY.assign(borders[1].begin(), borders[1].end());
     if (choices_.evenColumns) {
@@ -722,10 +724,10 @@ double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
     // at the span corners inside the cell and at the middle of each span's piece.
     auto surfaceAt = [&](cInt x, cInt y) {
         const Point2 uv = frame_->toParameter(x, y);
-        const int su = patches_.spanIndexU(uv.x()), sv = patches_.spanIndexV(uv.y());
-        const auto& breaksU = patches_.breakpointsU();
-        const auto& breaksV = patches_.breakpointsV();
-        return patches_.patch(su, sv).point(
+        const int su = patches_->spanIndexU(uv.x()), sv = patches_->spanIndexV(uv.y());
+        const auto& breaksU = patches_->breakpointsU();
+        const auto& breaksV = patches_->breakpointsV();
+        return patches_->patch(su, sv).point(
             (uv.x() - breaksU[su]) / (breaksU[su + 1] - breaksU[su]),
             (uv.y() - breaksV[sv]) / (breaksV[sv + 1] - breaksV[sv]));
     };
@@ -751,8 +753,8 @@ double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
             const Point2 low = frame_->toParameter(xs[a], ys[b]);
             const Point2 high = frame_->toParameter(xs[a + 1], ys[b + 1]);
             const Point2 middle = 0.5 * (low + high);
-            const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
-            SpanPiece piece{patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y())};
+            const int su = patches_->spanIndexU(middle.x()), sv = patches_->spanIndexV(middle.y());
+            SpanPiece piece{patches_->piece(su, sv, low.x(), high.x(), low.y(), high.y())};
             // exactly 0 and 1 at the cell's sides, which the bound takes for its border
             piece.s0 = double(xs[a] - r.x0) / double(r.x1 - r.x0);
             piece.s1 = double(xs[a + 1] - r.x0) / double(r.x1 - r.x0);
@@ -984,14 +986,14 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             const Point2 low = frame_->toParameter(r.x0, r.y0);
             const Point2 high = frame_->toParameter(r.x1, r.y1);
             const Point2 middle = 0.5 * (low + high);
-            const int su = patches_.spanIndexU(middle.x()), sv = patches_.spanIndexV(middle.y());
+            const int su = patches_->spanIndexU(middle.x()), sv = patches_->spanIndexV(middle.y());
             ownPiece = std::make_shared<const BezierPatch>(
-                patches_.piece(su, sv, low.x(), high.x(), low.y(), high.y()));
+                patches_->piece(su, sv, low.x(), high.x(), low.y(), high.y()));
             // not where the cell reaches past its span (a frame past the surface's domain): the
             // piece is then the span's part within it, clamped, and no longer maps the cell
             // linearly. A side on a span border rounded to the frame's step is on it.
-            const auto& breaksU = patches_.breakpointsU();
-            const auto& breaksV = patches_.breakpointsV();
+            const auto& breaksU = patches_->breakpointsU();
+            const auto& breaksV = patches_->breakpointsV();
             const double stepU = 1 / frame_->scaleU, stepV = 1 / frame_->scaleV;
             if (low.x() >= breaksU[su] - stepU && high.x() <= breaksU[su + 1] + stepU &&
                 low.y() >= breaksV[sv] - stepV && high.y() <= breaksV[sv + 1] + stepV)

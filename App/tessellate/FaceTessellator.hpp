@@ -71,8 +71,11 @@ struct CellChoices {
 // triangulate() cuts and triangulates the leaves with the completed boundary.
 class FaceTessellator {
 public:
+    // patches: the surface's Bezier patches where the caller has them (FacePatchGrids),
+    // otherwise made here
     FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode,
-                    const CellChoices& choices = {});
+                    const CellChoices& choices = {},
+                    std::shared_ptr<const BezierPatchGrid> patches = nullptr);
     ~FaceTessellator();
 
     // Throws std::runtime_error with the reason when the face cannot be tessellated.
@@ -122,7 +125,7 @@ private:
     ErrorBudget budget_;
     ErrorMode mode_;
     CellChoices choices_;
-    BezierPatchGrid patches_;
+    std::shared_ptr<const BezierPatchGrid> patches_;
     std::optional<FacePlane> plane_;  // where the surface lies in a plane (triangulate)
     // where the surface is a cylinder (and not a plane): its face may be triangulated unrolled
     std::optional<CylinderFrame> cylinder_;
