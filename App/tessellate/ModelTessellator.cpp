@@ -23,7 +23,7 @@
 #include "tessellate/BoundaryFan.hpp"
 #include "tessellate/ErrorBudget.hpp"
 #include "tessellate/EvenColumns.hpp"
-#include "tessellate/FacePatchGrids.hpp"
+#include "tessellate/FaceSurfaceCache.hpp"
 #include "tessellate/FaceSurfaceNeed.hpp"
 #include "tessellate/FaceTessellator.hpp"
 #include "tessellate/FoldedPairs.hpp"
@@ -203,10 +203,10 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
                                   const std::vector<char>& refineFreeChords = {},
                                   std::vector<std::size_t>* freeSegments = nullptr,
                                   FirstTessellationMemo* memo = nullptr,
-                                  const FacePatchGrids* grids = nullptr) {
+                                  const FaceSurfaceCache* surfaces = nullptr) {
     const auto start = std::chrono::steady_clock::now();
-    std::optional<FacePatchGrids> ownGrids;
-    const FacePatchGrids& patchGrids = grids ? *grids : ownGrids.emplace(model);
+    std::optional<FaceSurfaceCache> ownSurfaces;
+    const FaceSurfaceCache& surfaceCache = surfaces ? *surfaces : ownSurfaces.emplace(model);
     std::unique_ptr<tbb::global_control> threads;
     if (options.threads > 1)
         threads = std::make_unique<tbb::global_control>(
@@ -370,8 +370,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
         try {
             faceBudgets[f] =
                 ErrorBudget::forFace(options.tolerance, options.mode,
-                                     faceSurfaceNeed(model.faces[f], options.mode, budget.surface,
-                                                     patchGrids.of(f).get()));
+                                     surfaceCache.surfaceNeed(f, options.mode, budget.surface));
         } catch (const std::exception&) {
             // the kd-tree reports what is wrong with the face; until then the fixed split
         }
@@ -602,10 +601,11 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     std::vector<double> savedCells(faceCount, std::numeric_limits<double>::quiet_NaN());
     auto saved = [&](int f) {
         if (std::isnan(savedCells[f]))
-            savedCells[f] = surfaceCellEstimate(model.faces[f], options.mode,
-                                                faceBudgets[f].surface, patchGrids.of(f).get()) -
-                            surfaceCellEstimate(model.faces[f], options.mode, wholeSurface,
-                                                patchGrids.of(f).get());
+            savedCells[f] =
+                surfaceCellEstimate(model.faces[f], options.mode, faceBudgets[f].surface,
+                                    surfaceCache.patches(f).get()) -
+                surfaceCellEstimate(model.faces[f], options.mode, wholeSurface,
+                                    surfaceCache.patches(f).get());
         return savedCells[f];
     };
     std::vector<int> curveUse(model.edges.size(), -1);
@@ -920,11 +920,11 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
         forEachIndex(size_t(0), nodes.size(), [&](size_t k) {
             const int f = nodes[k] / 2;
             try {
-                lines[k] = evenColumnLines(model.faces[f], *faceLines[f].forColumns(), nodes[k] % 2,
-                                           faceBudgets[f].surface, options.mode,
-                                           options.flatCellsByDistance,
-                                           options.evenColumnsCutAcross && !hasFreeEdge(f),
-                                           options.gradedColumns, chords[k], patchGrids.of(f));
+                lines[k] = evenColumnLines(
+                    model.faces[f], *faceLines[f].forColumns(), nodes[k] % 2,
+                    faceBudgets[f].surface, options.mode, options.flatCellsByDistance,
+                    options.evenColumnsCutAcross && !hasFreeEdge(f), options.gradedColumns,
+                    chords[k], surfaceCache.patches(f));
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
                 lines[k].assign(intervals.size() - 1, {});
@@ -961,7 +961,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
                 tests.push_back(std::make_unique<ColumnTest>(
                     model.faces[nodes[k] / 2], *faceLines[nodes[k] / 2].forColumns(), nodes[k] % 2,
                     faceBudgets[nodes[k] / 2].surface, options.mode, options.flatCellsByDistance,
-                    chords[k], patchGrids.of(nodes[k] / 2)));
+                    chords[k], surfaceCache.patches(nodes[k] / 2)));
             for (std::size_t c = 1; c + 1 < candidates.size(); ++c) {
                 const bool mergeable = std::all_of(tests.begin(), tests.end(), [&](const auto& t) {
                     return t->columnAndChordsSettle(kept.back(), candidates[c + 1]);
@@ -1704,7 +1704,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
                 }
             }
             tessellators[f] = std::make_unique<FaceTessellator>(
-                model.faces[f], faceBudgets[f], options.mode, choices, patchGrids.of(f));
+                model.faces[f], faceBudgets[f], options.mode, choices, surfaceCache.patches(f));
             crossings[f] = tessellators[f]->findCrossings(loops);
             if (keep) {
                 FaceTreeMemo::Face& entry = treeMemo->faces[f];
@@ -2089,8 +2089,9 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 failed[failure.face - 1] = 1;
         return failed;
     };
-    // the faces' Bezier patches, for both tessellations of the model and the lone faces' retries
-    const FacePatchGrids grids(model);
+    // the faces' Bezier patches and surface needs, for both tessellations of the model and the
+    // lone faces' retries
+    const FaceSurfaceCache surfaces(model);
     auto retryLoneFaces = [&](TessellationResult& result) {
         if (options.mode != ErrorMode::Guaranteed || !options.retryLoneFaces ||
             !options.freeEdgesTakeSurfaceShare || options.keepFaceVertices)
@@ -2105,14 +2106,14 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 result.mesh.triangleFaces.begin(), result.mesh.triangleFaces.end(), f + 1));
             if (trianglesBefore > kBorderShare * before) continue;
             const Model lone = loneFaceModel(model, f);
-            FacePatchGrids loneGrids(lone);
+            FaceSurfaceCache loneSurfaces(lone);
             try {
-                loneGrids.give(0, grids.of(f));
+                loneSurfaces.take(0, surfaces, f);
             } catch (const std::exception&) {
                 // the retry makes its own, and says what is wrong with the face
             }
             TessellationResult retried =
-                tessellateOnce(lone, alone, true, before, {}, nullptr, nullptr, &loneGrids);
+                tessellateOnce(lone, alone, true, before, {}, nullptr, nullptr, &loneSurfaces);
             if (!retried.failures.empty()) continue;
             const std::size_t after = faceOpenEdges(retried.mesh, 1);
             if (after < before ||
@@ -2124,7 +2125,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     FirstTessellationMemo kept;
     FirstTessellationMemo* const memo = options.reuseFirstTessellation ? &kept : nullptr;
     TessellationResult result =
-        tessellateOnce(model, options, false, 0, {}, &freeSegments, memo, &grids);
+        tessellateOnce(model, options, false, 0, {}, &freeSegments, memo, &surfaces);
     retryLoneFaces(result);
     // A face whose free chords keep more than a tenth more open edges than their segments
     // (points that cell sides left on them and the removal could not drop) is tessellated
@@ -2151,7 +2152,7 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
         }
         if (std::find(refine.begin(), refine.end(), 1) != refine.end()) {
             TessellationResult refined =
-                tessellateOnce(model, options, false, 0, refine, nullptr, memo, &grids);
+                tessellateOnce(model, options, false, 0, refine, nullptr, memo, &surfaces);
             retryLoneFaces(refined);
             auto sum = [](const std::vector<std::size_t>& counts) {
                 return double(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
