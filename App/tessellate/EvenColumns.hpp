@@ -63,7 +63,7 @@ struct ChordsAlong {
 // filled to its sides, as the kd-tree bounds it.
 class ColumnTest {
 public:
-    // patches: the face's Bezier patches where the caller has them (FacePatchGrids), otherwise
+    // patches: the face's Bezier patches where the caller has them (FaceSurfaceCache), otherwise
     // made here
     ColumnTest(const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis,
                double target, ErrorMode mode, bool flatCellsByDistance,

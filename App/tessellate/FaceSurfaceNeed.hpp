@@ -13,7 +13,7 @@ namespace nurbslod {
 // curves: positive weights). A plane gives 0; a face that the kd-tree has to split gives a value
 // above `cap`, returned as soon as one patch shows it (the rest is not measured). ErrorBudget::
 // forFace gives what a face does not need for its surface to its trimming curves.
-// patches, where given, are the face's (FacePatchGrids); otherwise they are made here.
+// patches, where given, are the face's (FaceSurfaceCache); otherwise they are made here.
 double faceSurfaceNeed(const TrimmedSurface& face, ErrorMode mode, double cap,
                        const BezierPatchGrid* patches = nullptr);
 

@@ -71,7 +71,7 @@ struct CellChoices {
 // triangulate() cuts and triangulates the leaves with the completed boundary.
 class FaceTessellator {
 public:
-    // patches: the surface's Bezier patches where the caller has them (FacePatchGrids),
+    // patches: the surface's Bezier patches where the caller has them (FaceSurfaceCache),
     // otherwise made here
     FaceTessellator(const TrimmedSurface& face, const ErrorBudget& budget, ErrorMode mode,
                     const CellChoices& choices = {},
