@@ -107,6 +107,22 @@ struct SearchTables {
     // size x size, row-major
     std::vector<double> diagonal, cost;
     std::vector<std::size_t> split;
+
+    // Rings up to this size keep their tables (3 x 256^2 x 8 bytes = 1.5 MB a thread); a larger
+    // one gives its memory back when its search ends (up to 24 MB at kLargestRing), so that no
+    // thread of a long session holds it.
+    static constexpr std::size_t kKeptRing = 256;
+    void releaseAfter(std::size_t size) {
+        if (size <= kKeptRing) return;
+        *this = SearchTables{};
+    }
+};
+
+// Calls tables.releaseAfter(size) when the search ends, by whichever return.
+struct ReleaseTablesAfter {
+    SearchTables& tables;
+    std::size_t size;
+    ~ReleaseTablesAfter() { tables.releaseAfter(size); }
 };
 
 // The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that the points to drop
@@ -131,6 +147,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     double limit) {
     constexpr double kNever = std::numeric_limits<double>::infinity();
     thread_local SearchTables tables;
+    const ReleaseTablesAfter release{tables, ring.size()};
     auto position = [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; };
     std::vector<Point2>& ringUv = tables.ringUv;
     ringUv.resize(ring.size());
