@@ -3,6 +3,7 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <cmath>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -49,17 +50,23 @@ TEST(FaceSurfaceCache, MakesEachFacesPatchesOnceForEveryThread) {
 TEST(FaceSurfaceCache, SurfaceNeedIsTheFacesForTheModeAndCapAsked) {
     const Model model = boxLessSphere();
     const FaceSurfaceCache cache(model);
-    bool curved = false;
+    bool capsDiffer = false;
     for (int f = 0; f < static_cast<int>(model.faces.size()); ++f)
-        for (const ErrorMode mode : {ErrorMode::Guaranteed, ErrorMode::Approximate})
-            for (const double cap : {0.05, 0.5, 0.05}) {
-                const double need = faceSurfaceNeed(model.faces[f], mode, cap);
-                EXPECT_EQ(cache.surfaceNeed(f, mode, cap), need)
+        for (const ErrorMode mode : {ErrorMode::Guaranteed, ErrorMode::Approximate}) {
+            // a cap above the face's need and one under it (a plane needs none: 0 for both)
+            const double need = faceSurfaceNeed(model.faces[f], mode, 1e9);
+            ASSERT_TRUE(std::isfinite(need));
+            for (const double cap : {2 * need + 1e-9, 0.5 * need, 2 * need + 1e-9}) {
+                const double expected = faceSurfaceNeed(model.faces[f], mode, cap);
+                EXPECT_EQ(cache.surfaceNeed(f, mode, cap), expected)
                     << "face " << f + 1 << " cap " << cap;
-                curved |= need > 0;
             }
-    // the sphere needs some (a plane needs none), so the values compared differ between faces
-    EXPECT_TRUE(curved);
+            capsDiffer |= faceSurfaceNeed(model.faces[f], mode, 0.5 * need) !=
+                          faceSurfaceNeed(model.faces[f], mode, 2 * need + 1e-9);
+        }
+    // the sphere's need is over the lower cap (infinite) and within the higher: a cache that
+    // kept one value whatever the cap would fail above
+    EXPECT_TRUE(capsDiffer);
 }
 
 TEST(FaceSurfaceCache, ALoneFaceTakesTheModelsPatchesAndNeed) {
