@@ -110,7 +110,7 @@ struct SearchTables {
 
     // Rings up to this size keep their tables (3 x 256^2 x 8 bytes = 1.5 MB a thread); a larger
     // one gives its memory back when its search ends (up to 24 MB at kLargestRing), so that no
-    // thread of a long session holds it.
+    // thread of a long-running FreeCAD process holds it.
     static constexpr std::size_t kKeptRing = 256;
     void releaseAfter(std::size_t size) {
         if (size <= kKeptRing) return;
