@@ -102,6 +102,8 @@ struct SearchTables {
     std::vector<int> innerRing;  // the ring indices of each inner edge's ends, two per edge
     std::vector<EdgeFromRing> fromRing;
     std::vector<std::size_t> fromRingStart;
+    // where each ring point's next edge goes in fromRing, while they are laid out
+    std::vector<std::size_t> fromRingNext;
     std::vector<std::size_t> crossable;
     std::vector<Box> sideBoxes;
     // size x size, row-major
@@ -262,7 +264,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
     std::vector<EdgeFromRing>& fromRing = tables.fromRing;
     fromRing.resize(fromRingStart[size]);
     {
-        std::vector<std::size_t>& next = tables.split;  // a cursor per ring point, for now
+        std::vector<std::size_t>& next = tables.fromRingNext;
         next.assign(fromRingStart.begin(), fromRingStart.end() - 1);
         for (std::size_t k = 0; k < inner.size(); ++k) {
             const PlanarEdge& edge = inner[k];
