@@ -385,7 +385,7 @@ Handle(Geom2d_BSplineCurve)
     auto guess = [&](double s) { return pcurve->Value(edge.thetaAt(s, rational.Value(s))); };
     Handle(Geom2d_BSplineCurve) remade =
         pcurveFromCurve([&](double s) { return rational.Value(s); }, surface, guess, edge.first,
-                        edge.last, accuracy);
+                        edge.last, accuracy, smoothnessBreaks(rational, edge.first, edge.last));
     if (remade.IsNull() && !newParameter)
         // the projection failed, the file's pcurve is still right: the same (u, v) at theta(s)
         remade = pcurveFromCurve(

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Adaptor3d_Curve.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -7,6 +8,7 @@
 #include <functional>
 #include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
+#include <vector>
 
 namespace nurbslod::occ {
 
@@ -36,9 +38,16 @@ Handle(Geom2d_BSplineCurve)
 
 // The same for a 3D curve and a guess given as functions of the edge parameter: an edge whose
 // parameter the importer changes (a circle's rational form) gives its points and guesses there.
-Handle(Geom2d_BSplineCurve) pcurveFromCurve(const std::function<gp_Pnt(double)>& curve,
-                                            const Handle(Geom_BSplineSurface) & surface,
-                                            const std::function<gp_Pnt2d(double)>& guess,
-                                            double first, double last, double accuracy);
+// breaks: the parameters inside (first, last) where the 3D curve's smoothness breaks (the ends
+// of its C2 intervals, in any order); the first samples split each piece between them evenly.
+Handle(Geom2d_BSplineCurve)
+    pcurveFromCurve(const std::function<gp_Pnt(double)>& curve,
+                    const Handle(Geom_BSplineSurface) & surface,
+                    const std::function<gp_Pnt2d(double)>& guess, double first, double last,
+                    double accuracy, std::vector<double> breaks = {});
+
+// The ends of the C2 intervals of a curve inside (first, last): the breaks pcurveFromCurve
+// takes.
+std::vector<double> smoothnessBreaks(const Adaptor3d_Curve& curve, double first, double last);
 
 }  // namespace nurbslod::occ

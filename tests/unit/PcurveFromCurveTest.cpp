@@ -3,9 +3,14 @@
 // other stays a cubic interpolant. Both follow the curve within the accuracy asked for.
 #include <gtest/gtest.h>
 
+#include <GeomAdaptor_Curve.hxx>
 #include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <cmath>
 #include <functional>
 
@@ -118,6 +123,47 @@ TEST(PcurveFromCurve, ProjectionsOnTheBorderStayOnIt) {
         ASSERT_FALSE(pcurve.IsNull()) << c.axis;
         for (int i = 1; i <= pcurve->NbPoles(); ++i)
             EXPECT_EQ(pcurve->Pole(i).Coord(c.axis + 1), c.border) << c.axis << " pole " << i;
+    }
+}
+
+// A curve of smooth pieces (a cubic B-spline with a double knot: C1 there, C2 elsewhere) has
+// its breaks at those knots, inside the range asked only.
+TEST(PcurveFromCurve, SmoothnessBreaksAreTheCurvesC2Joints) {
+    TColgp_Array1OfPnt poles(1, 7);
+    for (int i = 1; i <= 7; ++i) poles(i) = gp_Pnt(i, (i % 2) * 0.5, 0);
+    TColStd_Array1OfReal knots(1, 4);
+    knots(1) = 0, knots(2) = 0.3, knots(3) = 0.6, knots(4) = 1;
+    TColStd_Array1OfInteger multiplicities(1, 4);
+    multiplicities(1) = multiplicities(4) = 4, multiplicities(2) = 1, multiplicities(3) = 2;
+    const GeomAdaptor_Curve curve(new Geom_BSplineCurve(poles, knots, multiplicities, 3));
+    // the single knot at 0.3 leaves the curve C2, the double one at 0.6 does not
+    EXPECT_EQ(occ::smoothnessBreaks(curve, 0, 1), std::vector<double>{0.6});
+    EXPECT_TRUE(occ::smoothnessBreaks(curve, 0.65, 1).empty());
+    EXPECT_TRUE(occ::smoothnessBreaks(curve, 0, 0.6).empty());
+}
+
+// The first samples split each piece between the breaks evenly: the interpolant has a knot at
+// every break (a sample there), and follows the curve within the accuracy on each piece.
+TEST(PcurveFromCurve, SamplesStartAtTheBreaks) {
+    const Cylinder cylinder;
+    const Handle(Geom_BSplineSurface)& surface = cylinder.surface;
+    const double first = cylinder.first, last = cylinder.last;
+    auto uv = [&](double s) { return gp_Pnt2d(s, 2.0 + 0.2 * std::sin(3 * (s - first))); };
+    auto curve = [&](double s) {
+        const gp_Pnt2d p = uv(s);
+        return surface->Value(p.X(), p.Y());
+    };
+    constexpr double accuracy = 1e-6;
+    const std::vector<double> breaks{first + 0.58 * (last - first), first + 0.21 * (last - first)};
+    const Handle(Geom2d_BSplineCurve) pcurve =
+        occ::pcurveFromCurve(curve, surface, uv, first, last, accuracy, breaks);
+    ASSERT_FALSE(pcurve.IsNull());
+    EXPECT_EQ(pcurve->Degree(), 3);
+    EXPECT_LE(largestMiss(pcurve, surface, curve, first, last), accuracy);
+    for (const double at : breaks) {
+        bool knot = false;
+        for (int i = 1; i <= pcurve->NbKnots(); ++i) knot = knot || pcurve->Knot(i) == at;
+        EXPECT_TRUE(knot) << "no sample at the break " << at;
     }
 }
 
