@@ -477,7 +477,7 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
                 continue;
             }
             if (!newParameter && unwrapped == surface &&
-                pcurveDeviation(edge, surface, pcurve, curve.first, curve.last) <= pcurveAccuracy)
+                pcurveFollowsEdge(edge, surface, pcurve, curve.first, curve.last, pcurveAccuracy))
                 continue;
             // the file's pcurve is the guess: GeomConvert's parameter stays within a fraction of
             // a span of the analytic one, and it keeps the side of a seam

@@ -12,10 +12,11 @@
 
 namespace nurbslod::occ {
 
-// How far the pcurve, mapped onto the surface, strays from the edge's 3D curve at the same
-// edge parameter (the largest of a few samples over [first, last]).
-double pcurveDeviation(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
-                       const Handle(Geom2d_Curve) & pcurve, double first, double last);
+// Whether the pcurve, mapped onto the surface, stays within `within` of the edge's 3D curve at
+// the same edge parameter (at 17 samples over [first, last]).
+bool pcurveFollowsEdge(const TopoDS_Edge& edge, const Handle(Geom_BSplineSurface) & surface,
+                       const Handle(Geom2d_Curve) & pcurve, double first, double last,
+                       double within);
 
 // The edge's curve on a surface remade from its 3D curve, over the edge parameter range
 // [first, last]: each 3D point is projected onto the surface by Newton steps from `guess` (the
