@@ -689,13 +689,16 @@ TEST(PolygonTriangulator, RandomConvexCellsWithHangingPoints) {
     }
 }
 
-TEST(PolygonTriangulator, RandomStarShapedPolygonsWithSquareHoles) {
-    std::mt19937_64 random(2004);
+// Star-shaped polygons of fewest to most points with random square holes, triangulated
+// soundly: every point used, no overlaps, the triangles' area the polygon's.
+static void expectRandomStarShapedPolygonsWithSquareHoles(std::uint64_t seed, int trials,
+                                                          int fewest, int most) {
+    std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (int trial = 0; trial < 400; ++trial) {
+    for (int trial = 0; trial < trials; ++trial) {
         // A polygon star-shaped around the origin: points at increasing angles, random radii.
         // Coordinates are multiples of 4, so edge midpoints are integer hanging points.
-        const int count = std::uniform_int_distribution<int>(4, 40)(random);
+        const int count = std::uniform_int_distribution<int>(fewest, most)(random);
         Ring star;
         for (int i = 0; i < count; ++i) {
             const double angle = 2 * std::numbers::pi * (i + 0.4 * unit(random)) / count;
@@ -748,11 +751,20 @@ TEST(PolygonTriangulator, RandomStarShapedPolygonsWithSquareHoles) {
         const std::size_t holeCount = rings.size() - 1;
         EXPECT_EQ(result.triangles.size(), flatten(rings).size() + 2 * holeCount - 2);
         expectValidTriangulation(rings, result);
-        if (HasFailure()) {
+        if (::testing::Test::HasFailure()) {
             ADD_FAILURE() << "trial " << trial << ": " << describe(rings);
             return;
         }
     }
+}
+
+TEST(PolygonTriangulator, RandomStarShapedPolygonsWithSquareHoles) {
+    expectRandomStarShapedPolygonsWithSquareHoles(2004, 400, 4, 40);
+}
+
+// Rings of more than 80 nodes take the Z-order index in the ear test: the same checks.
+TEST(PolygonTriangulator, RandomStarShapedPolygonsOfManyPointsWithSquareHoles) {
+    expectRandomStarShapedPolygonsWithSquareHoles(2026, 100, 81, 600);
 }
 
 TEST(PolygonTriangulator, ClipperOutputOfCellsClippedByRandomTrimmingRegions) {
