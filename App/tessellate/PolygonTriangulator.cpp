@@ -409,10 +409,11 @@ private:
         double lowX = double(pointOf(start_).x), highX = lowX;
         double lowY = double(pointOf(start_).y), highY = lowY;
         for (const std::uint32_t n : ring) {
-            lowX = std::min(lowX, double(pointOf(n).x)),
-            highX = std::max(highX, double(pointOf(n).x));
-            lowY = std::min(lowY, double(pointOf(n).y)),
-            highY = std::max(highY, double(pointOf(n).y));
+            const double x = double(pointOf(n).x), y = double(pointOf(n).y);
+            lowX = std::min(lowX, x);
+            highX = std::max(highX, x);
+            lowY = std::min(lowY, y);
+            highY = std::max(highY, y);
         }
         zLowX_ = lowX, zLowY_ = lowY;
         const double extent = std::max(highX - lowX, highY - lowY);
