@@ -415,7 +415,8 @@ private:
             lowY = std::min(lowY, y);
             highY = std::max(highY, y);
         }
-        zLowX_ = lowX, zLowY_ = lowY;
+        zLowX_ = lowX;
+        zLowY_ = lowY;
         const double extent = std::max(highX - lowX, highY - lowY);
         zScale_ = extent > 0 ? 65535.0 / extent : 0.0;
         zCode_.assign(nodes_.size(), 0);
