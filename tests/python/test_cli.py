@@ -3,6 +3,7 @@ writes a mesh and ends its output with a JSON summary."""
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -91,6 +92,24 @@ class CommandLine(TempDirTestCase):
             out.write("ISO-10303-21;\nHEADER;\nthis is not STEP at all\n")
         self.assertBadInput(["tessellate", garbage, "-o", self.path("out.obj")], "garbage.step")
         self.assertFalse(os.path.exists(self.path("out.obj")))
+
+    def test_step_whose_translation_faults(self):
+        # the box with the edge loop of one face bound deleted: OpenCASCADE's STEP translator
+        # reads the bound through a null handle (it ended the process before SignalsAsFailures)
+        with open(self.model) as step:
+            text = step.read()
+        loop = re.search(r"FACE_(?:OUTER_)?BOUND\('[^']*',(#\d+),", text).group(1)
+        broken = self.path("no_loop.step")
+        with open(broken, "w") as out:
+            out.write("\n".join(line for line in text.split("\n")
+                                if not re.match(re.escape(loop) + r"\s*=", line)))
+        self.assertBadInput(["tessellate", broken, "-o", self.path("out.obj")],
+                            "that OpenCASCADE could translate")
+        self.assertFalse(os.path.exists(self.path("out.obj")))
+        # the module raises the same, in the caller's process
+        with self.assertRaises(Exception) as raised:
+            NurbsLOD.tessellate(broken, tolerance=0.1)
+        self.assertIn("OpenCASCADE could translate", str(raised.exception))
 
     def test_bad_tolerances(self):
         for option in ("--tolerance", "--relative"):

@@ -1,0 +1,56 @@
+#include <gtest/gtest.h>
+
+#include <Standard_ErrorHandler.hxx>
+#include <Standard_Failure.hxx>
+#include <cmath>
+#include <csignal>
+
+#include "occ/SignalsAsFailures.hpp"
+
+namespace nurbslod {
+namespace {
+
+struct sigaction handlerOf(int signal) {
+    struct sigaction action {};
+    sigaction(signal, nullptr, &action);
+    return action;
+}
+
+// the fault a malformed STEP file makes OpenCASCADE's translator raise (a null handle read)
+void readThroughNull() {
+    volatile int* volatile nowhere = nullptr;
+    *nowhere = 1;
+}
+
+TEST(SignalsAsFailures, AFaultIsAFailureWhileAGuardLivesAndTheHandlersComeBack) {
+    const struct sigaction segvBefore = handlerOf(SIGSEGV), intBefore = handlerOf(SIGINT);
+    {
+        const occ::SignalsAsFailures guard;
+        bool caught = false;
+        try {
+            OCC_CATCH_SIGNALS
+            readThroughNull();
+        } catch (const Standard_Failure&) {
+            caught = true;
+        }
+        EXPECT_TRUE(caught);
+        // an interrupt stays the process's; floating point keeps NaN, no trap
+        EXPECT_EQ(handlerOf(SIGINT).sa_handler, intBefore.sa_handler);
+        volatile double zero = 0;
+        EXPECT_TRUE(std::isnan(zero / zero));
+        // a second guard (another reader) inside the first changes nothing when it ends
+        { const occ::SignalsAsFailures inner; }
+        caught = false;
+        try {
+            OCC_CATCH_SIGNALS
+            readThroughNull();
+        } catch (const Standard_Failure&) {
+            caught = true;
+        }
+        EXPECT_TRUE(caught);
+    }
+    EXPECT_EQ(handlerOf(SIGSEGV).sa_handler, segvBefore.sa_handler);
+}
+
+}  // namespace
+}  // namespace nurbslod
