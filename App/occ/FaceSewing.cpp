@@ -1,6 +1,7 @@
 #include "occ/FaceSewing.hpp"
 
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -24,6 +25,7 @@ SewnShape sewFaces(const TopoDS_Shape& shape, double tolerance) {
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     try {
+        OCC_CATCH_SIGNALS
         BRepBuilderAPI_Sewing sewing(tolerance);
         sewing.Add(shape);
         sewing.Perform();

@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -113,6 +114,7 @@ std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolera
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     std::vector<EdgeSamples> edges;
     try {
+        OCC_CATCH_SIGNALS
         for (const auto& [edge, face] : freeEdgesWithFaces(shape))
             edges.push_back(samplesOf(edge, faces.FindIndex(face)));
     } catch (const Standard_Failure&) {
@@ -129,6 +131,7 @@ std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolera
     std::vector<bool> paired(edges.size(), false);
     std::vector<FreeEdgePair> pairs;
     try {
+        OCC_CATCH_SIGNALS
         for (size_t i = 0; i < order.size(); ++i) {
             const EdgeSamples& a = edges[order[i]];
             if (paired[order[i]]) continue;
@@ -327,6 +330,7 @@ void joinFreeEdgePairs(Model& model, const std::vector<std::pair<int, int>>& pai
         };
         Handle(Geom2d_BSplineCurve) remade;
         try {
+            OCC_CATCH_SIGNALS
             remade = pcurveFromCurve([&](double t) { return toPnt(onA(t)); }, surfaces[b.face],
                                      guess, curveA.first, curveA.last, accuracy);
         } catch (const Standard_Failure&) {

@@ -27,6 +27,7 @@
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
 #include <ShapeAnalysis_Surface.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -43,6 +44,8 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+
+#include "occ/SignalsAsFailures.hpp"
 
 namespace nurbslod::occ {
 
@@ -732,6 +735,7 @@ private:
                        double precision) const {
         const gp_Pnt p = toOcc(sample.point);
         try {
+            OCC_CATCH_SIGNALS
             SurfaceProjector::Foot foot;
             if (!reference.parameters.empty() && sample.referenceTriangle >= 0) {
                 const auto& corners = reference.triangles[sample.referenceTriangle];
@@ -958,6 +962,8 @@ double faceArea(const TopoDS_Face& face) {
 }  // namespace
 
 VerificationReport verifyMesh(const TopoDS_Shape& shape, const Mesh& mesh, double tolerance) {
+    // a face whose measurement faults in OpenCASCADE is reported, not the end of the process
+    const SignalsAsFailures faults;
     const auto start = std::chrono::steady_clock::now();
     if (!(tolerance > 0) || !std::isfinite(tolerance))
         throw std::invalid_argument("the tolerance must be a positive finite number, not " +
@@ -981,6 +987,7 @@ VerificationReport verifyMesh(const TopoDS_Shape& shape, const Mesh& mesh, doubl
                 const std::vector<std::uint32_t>& triangles = trianglesOfFace[f];
                 if (triangles.empty()) {
                     try {
+                        OCC_CATCH_SIGNALS
                         missing[f] = faceArea(face) > tolerance * tolerance;
                     } catch (const Standard_Failure&) {
                         missing[f] = 1;  // a face whose area cannot be measured is not empty
@@ -990,6 +997,7 @@ VerificationReport verifyMesh(const TopoDS_Shape& shape, const Mesh& mesh, doubl
                 degenerate[f] = countDegenerate(mesh, triangles);
                 FaceDeviation deviation;
                 try {
+                    OCC_CATCH_SIGNALS
                     deviation = FaceMeasurer(face, mesh, triangles, tolerance).measure();
                 } catch (const Standard_Failure& failure) {
                     deviation.measured = false;

@@ -29,6 +29,8 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SweptSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <OSD_Signal.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
@@ -55,6 +57,7 @@
 #include "occ/NearIsoparametricCurve.hpp"
 #include "occ/PcurveFromEdgeCurve.hpp"
 #include "occ/ShapeDiagonal.hpp"
+#include "occ/SignalsAsFailures.hpp"
 #include "tessellate/ForEachIndex.hpp"
 #include "trim/LoopWinding.hpp"
 
@@ -332,6 +335,7 @@ std::optional<ConicEdge> conicEdgeOf(const TopoDS_Edge& edge) {
     if (!(result.last > result.first) || result.last - result.first > 2 * M_PI + 1e-9)
         return std::nullopt;
     try {
+        OCC_CATCH_SIGNALS
         result.rational = onEdgeRange(
             GeomConvert::CurveToBSplineCurve(
                 new Geom_TrimmedCurve(curve, result.first, result.last), Convert_TgtThetaOver2),
@@ -362,6 +366,7 @@ Handle(Geom2d_BSplineCurve)
     if (!newParameter && (basis->IsKind(STANDARD_TYPE(Geom2d_Circle)) ||
                           basis->IsKind(STANDARD_TYPE(Geom2d_Ellipse)))) {
         try {
+            OCC_CATCH_SIGNALS
             Handle(Geom2d_BSplineCurve) exact = Geom2dConvert::CurveToBSplineCurve(
                 new Geom2d_TrimmedCurve(basis, edge.first, edge.last), Convert_TgtThetaOver2);
             exact = onEdgeRange(clampedCurve(exact, edge.first, edge.last), edge.first, edge.last);
@@ -506,6 +511,8 @@ TrimmedSurface importFace(const TopoDS_Face& face, int index,
 
 Model importModel(const TopoDS_Shape& original, int threads,
                   const std::function<void(std::size_t, std::size_t)>& progress) {
+    // a face whose conversion faults in OpenCASCADE fails alone (each try below catches it)
+    const SignalsAsFailures faults;
     Model model;
     TopTools_IndexedMapOfShape originalFaces;
     TopExp::MapShapes(original, TopAbs_FACE, originalFaces);
@@ -545,7 +552,11 @@ Model importModel(const TopoDS_Shape& original, int threads,
     auto failedFace = [](int k, const Standard_Failure& failure) {
         TrimmedSurface face;
         face.faceIndex = k;
-        face.error = std::string("import failed: ") + failure.GetMessageString();
+        // a fault in OpenCASCADE's own code on the face's geometry (SignalsAsFailures)
+        face.error = failure.IsKind(STANDARD_TYPE(OSD_Signal))
+                         ? std::string("import failed: OpenCASCADE faulted on its geometry (") +
+                               failure.GetMessageString() + ")"
+                         : std::string("import failed: ") + failure.GetMessageString();
         return face;
     };
     // Each face on its own: it reads the shared edges and writes only its own slot, so the
@@ -560,6 +571,7 @@ Model importModel(const TopoDS_Shape& original, int threads,
         }
         const bool newParameter = conversion == SurfaceConversion::NewParameter;
         try {
+            OCC_CATCH_SIGNALS
             model.faces[slot] = importFace(sewn.faces[slot], k, edgeIndex, pcurveAccuracy,
                                            newParameter, surfaces[slot]);
             return;
@@ -577,6 +589,7 @@ Model importModel(const TopoDS_Shape& original, int threads,
         // face is converted (BRepBuilderAPI_NurbsConvert: 55 ms of FreeCAD's IDF RLF_7030.stp,
         // whose face 1 is such a cylinder, against 5 ms for its other 71 faces).
         try {
+            OCC_CATCH_SIGNALS
             model.faces[slot] = importFace(sewn.faces[slot], k, edgeIndex, pcurveAccuracy,
                                            newParameter, surfaces[slot], 0.25);
         } catch (const Standard_Failure&) {
@@ -603,6 +616,7 @@ Model importModel(const TopoDS_Shape& original, int threads,
         builder.MakeCompound(compound);
         for (int k : toConvert) builder.Add(compound, sewn.faces[k]);
         try {
+            OCC_CATCH_SIGNALS
             converter.emplace(compound, Standard_False);
             if (!converter->IsDone()) converter.reset();
         } catch (const Standard_Failure&) {
@@ -621,6 +635,7 @@ Model importModel(const TopoDS_Shape& original, int threads,
         const int k = slot + 1;
         const TopoDS_Face originalFace = TopoDS::Face(originalFaces(k));
         try {
+            OCC_CATCH_SIGNALS
             TopoDS_Face face;
             if (converter) {
                 face = TopoDS::Face(converter->ModifiedShape(sewn.faces[slot]));

@@ -4,6 +4,7 @@
 #include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -146,6 +147,7 @@ Handle(Geom2d_BSplineCurve)
         return surface.value(uv.X(), uv.Y()).Distance(curve(first + (last - first) * s)) <= within;
     };
     try {
+        OCC_CATCH_SIGNALS
         if (!mapsOnto(kChecks / 2)) return {};
         for (int k = 1; k < kChecks; ++k)
             if (k != kChecks / 2 && !mapsOnto(k)) return {};
@@ -291,6 +293,7 @@ Handle(Geom2d_BSplineCurve)
         if (slid) return {};
         Handle(Geom2d_BSplineCurve) result;
         try {
+            OCC_CATCH_SIGNALS
             Geom2dAPI_Interpolate interpolate(points, knots, Standard_False, 1e-15);
             interpolate.Perform();
             if (!interpolate.IsDone()) return {};

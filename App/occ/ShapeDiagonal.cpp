@@ -3,6 +3,7 @@
 #include <BRepBndLib.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -14,6 +15,7 @@ namespace nurbslod::occ {
 double boundingBoxDiagonal(const TopoDS_Shape& shape) {
     Bnd_Box box;
     try {
+        OCC_CATCH_SIGNALS
         BRepBndLib::Add(shape, box);
     } catch (const Standard_Failure&) {
         box.SetVoid();
@@ -21,6 +23,7 @@ double boundingBoxDiagonal(const TopoDS_Shape& shape) {
         TopExp::MapShapes(shape, TopAbs_FACE, faces);
         for (int k = 1; k <= faces.Extent(); ++k) {
             try {
+                OCC_CATCH_SIGNALS
                 Bnd_Box faceBox;
                 BRepBndLib::Add(faces(k), faceBox);
                 box.Add(faceBox);
