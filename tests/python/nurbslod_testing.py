@@ -27,6 +27,12 @@ def bspline_face():
     return Part.Face(surface)
 
 
+def nurbslod(*args, timeout=300):
+    """The command line with these arguments, its output captured (subprocess.CompletedProcess)."""
+    return subprocess.run([CLI, *args], stdin=subprocess.DEVNULL, capture_output=True,
+                          text=True, timeout=timeout)
+
+
 def tessellate_in_fresh_process(path, **options):
     """NurbsLOD.tessellate(path, **options) in a new freecadcmd process, as a macro would call it:
     its exit status and "ok", or the message of the exception it raised (None where it printed

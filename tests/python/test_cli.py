@@ -5,13 +5,12 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import tempfile
 
 import Part
 
 import NurbsLOD
-from nurbslod_testing import CLI, TempDirTestCase, tessellate_in_fresh_process
+from nurbslod_testing import CLI, TempDirTestCase, nurbslod, tessellate_in_fresh_process
 
 BAD_INPUT = 2
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
@@ -32,12 +31,8 @@ class CommandLine(TempDirTestCase):
         super().setUp()
         self.assertTrue(os.access(CLI, os.X_OK), "the build has no " + CLI)
 
-    def nurbslod(self, *args):
-        return subprocess.run([CLI, *args], stdin=subprocess.DEVNULL, capture_output=True,
-                              text=True, timeout=300)
-
     def assertBadInput(self, args, message=None):
-        run = self.nurbslod(*args)
+        run = nurbslod(*args)
         self.assertEqual(run.returncode, BAD_INPUT,
                          "nurbslod {}: {}{}".format(" ".join(args), run.stdout, run.stderr))
         self.assertTrue(run.stderr.strip(), "no message for nurbslod " + " ".join(args))
@@ -46,7 +41,7 @@ class CommandLine(TempDirTestCase):
 
     def test_tessellate_writes_obj_and_summary(self):
         out = self.path("box.obj")
-        run = self.nurbslod("tessellate", self.model, "-o", out, "--tolerance", "0.01")
+        run = nurbslod("tessellate", self.model, "-o", out, "--tolerance", "0.01")
         self.assertEqual(run.returncode, 0, run.stderr)
         summary = json.loads(run.stdout.strip().splitlines()[-1])
         self.assertGreater(summary["triangles"], 0)
@@ -65,7 +60,7 @@ class CommandLine(TempDirTestCase):
         # BadOrientationOfSubshape)
         model = os.path.join(DATA, "hole_wound_like_outer.brep")
         out = self.path("hole.obj")
-        run = self.nurbslod("tessellate", model, "-o", out, "--tolerance", "0.01")
+        run = nurbslod("tessellate", model, "-o", out, "--tolerance", "0.01")
         self.assertEqual(run.returncode, 0, run.stderr)
         summary = json.loads(run.stdout.strip().splitlines()[-1])
         self.assertEqual(summary["faces_failed"], [])
@@ -75,7 +70,7 @@ class CommandLine(TempDirTestCase):
         python = NurbsLOD.tessellate(model, tolerance=0.01)["summary"]
         self.assertEqual(python["faces_warned"], summary["faces_warned"])
         # the good model has no word on any face
-        good = self.nurbslod("tessellate", self.model, "-o", self.path("box.obj"),
+        good = nurbslod("tessellate", self.model, "-o", self.path("box.obj"),
                              "--tolerance", "0.01")
         self.assertEqual(json.loads(good.stdout.strip().splitlines()[-1])["faces_warned"], [])
 

@@ -4,10 +4,9 @@ tolerance both ways, none missing or failed, and a closed solid's mesh closed.""
 
 import json
 import os
-import subprocess
 import sys
 
-from nurbslod_testing import CLI, ROOT, TempDirTestCase
+from nurbslod_testing import ROOT, TempDirTestCase, nurbslod
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "bench"))
 import generated_shapes  # noqa: E402
@@ -30,8 +29,7 @@ OPEN = [generated_shapes.freeform_with_hole, generated_shapes.revolved_profile,
 
 class GeneratedShapes(TempDirTestCase):
     def run_cli(self, *args):
-        run = subprocess.run([CLI, *args], stdin=subprocess.DEVNULL, capture_output=True,
-                             text=True, timeout=300)
+        run = nurbslod(*args)
         return run, json.loads(run.stdout.strip().splitlines()[-1]) if run.stdout.strip() else {}
 
     def tessellated_and_verified(self, make, model=None):

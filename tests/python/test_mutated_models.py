@@ -9,9 +9,8 @@ import json
 import os
 import random
 import re
-import subprocess
 
-from nurbslod_testing import CLI, TempDirTestCase, tessellate_in_fresh_process
+from nurbslod_testing import TempDirTestCase, nurbslod, tessellate_in_fresh_process
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
 
@@ -54,10 +53,8 @@ class MutatedModels(TempDirTestCase):
     good = os.path.join(DATA, "box_hole_sphere.step")
 
     def tessellate(self, path):
-        return subprocess.run([CLI, "tessellate", path, "-o", self.path("out.obj"),
-                               "--relative", "1e-3", "--threads", "1"],
-                              stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                              timeout=120)
+        return nurbslod("tessellate", path, "-o", self.path("out.obj"), "--relative", "1e-3",
+                        "--threads", "1", timeout=120)
 
     def test_no_copy_ends_the_process(self):
         good = self.tessellate(self.good)
