@@ -237,7 +237,12 @@ int runTessellate(const TessellateArguments& arguments) {
         (*progress)(done, total);
     };
 
-    TessellationResult result = tessellateModel(model, options);
+    TessellationResult result;
+    try {
+        result = tessellateModel(model, options);
+    } catch (const std::invalid_argument& error) {
+        throw BadInput(arguments.model + ": " + error.what());  // a tolerance the model cannot hold
+    }
     progress->finish(static_cast<std::size_t>(result.faces));
 
     try {

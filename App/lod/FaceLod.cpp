@@ -16,6 +16,7 @@ namespace nurbslod::gui {
 Model singleFaceModel(const Model& model, int faceIndex) {
     Model single;
     single.boundingBoxDiagonal = model.boundingBoxDiagonal;
+    single.origin = model.origin;
     TrimmedSurface face = model.faces.at(static_cast<std::size_t>(faceIndex));
     std::unordered_map<int, int> edgeOf, vertexOf;
     auto vertex = [&](int v) {

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessellate/ModelOrigin.hpp"
+
 namespace nurbslod::gui {
 
 namespace {
@@ -211,16 +213,17 @@ double FaceLodCache::replaceFace(int face, const Model& replacement, int level) 
     const auto start = Clock::now();
     // The edited model: a copy that shares nothing with jobs still running on the old one.
     auto edited = std::make_shared<Model>(*model_);
+    // its coordinates start where the model's do (an import may have moved either)
+    const Model placed = withOrigin(replacement, model_->origin);
     const int edgeBase = static_cast<int>(edited->edges.size());
     const int vertexBase = static_cast<int>(edited->vertices.size());
-    for (ModelEdge edge : replacement.edges) {
+    for (ModelEdge edge : placed.edges) {
         if (edge.firstVertex >= 0) edge.firstVertex += vertexBase;
         if (edge.lastVertex >= 0) edge.lastVertex += vertexBase;
         edited->edges.push_back(edge);
     }
-    edited->vertices.insert(edited->vertices.end(), replacement.vertices.begin(),
-                            replacement.vertices.end());
-    TrimmedSurface surface = replacement.faces.front();
+    edited->vertices.insert(edited->vertices.end(), placed.vertices.begin(), placed.vertices.end());
+    TrimmedSurface surface = placed.faces.front();
     surface.faceIndex = face + 1;
     for (TrimLoop& loop : surface.loops)
         for (TrimCurve& curve : loop.curves)
@@ -245,7 +248,8 @@ double FaceLodCache::movePole(int face, int i, int j, const Point3& position, in
     auto edited = std::make_shared<Model>(*model_);
     HomogeneousPoint3& pole = edited->faces[face].surface.pole(i, j);
     const double weight = pole.w();
-    pole.head<3>() = weight * position;  // P^w = (w x, w y, w z, w), NURBS Book 4.15
+    // P^w = (w x, w y, w z, w), NURBS Book 4.15, in the model's coordinates (Model::origin)
+    pole.head<3>() = weight * (position - edited->origin);
     return installFace(face, std::move(edited), level, start);
 }
 

@@ -12,7 +12,7 @@
 
 namespace nurbslod::occ {
 
-double boundingBoxDiagonal(const TopoDS_Shape& shape) {
+ShapeExtent shapeExtent(const TopoDS_Shape& shape) {
     Bnd_Box box;
     try {
         OCC_CATCH_SIGNALS
@@ -34,9 +34,16 @@ double boundingBoxDiagonal(const TopoDS_Shape& shape) {
         for (int k = 1; k <= vertices.Extent(); ++k)
             box.Add(BRep_Tool::Pnt(TopoDS::Vertex(vertices(k))));
     }
-    if (box.IsVoid()) return 0;
+    if (box.IsVoid()) return {};
     box.SetGap(0.0);
-    return std::sqrt(box.SquareExtent());
+    ShapeExtent extent;
+    extent.diagonal = std::sqrt(box.SquareExtent());
+    extent.centre = 0.5 * (box.CornerMin().XYZ() + box.CornerMax().XYZ());
+    return extent;
+}
+
+double boundingBoxDiagonal(const TopoDS_Shape& shape) {
+    return shapeExtent(shape).diagonal;
 }
 
 }  // namespace nurbslod::occ

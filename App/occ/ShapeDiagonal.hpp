@@ -1,6 +1,7 @@
 #pragma once
 
 #include <TopoDS_Shape.hxx>
+#include <gp_XYZ.hxx>
 
 namespace nurbslod::occ {
 
@@ -10,5 +11,12 @@ namespace nurbslod::occ {
 // angles), and from the vertices where no face gives one, so that a broken face does not stop
 // the others: it fails on its own.
 double boundingBoxDiagonal(const TopoDS_Shape& shape);
+
+// The same box's diagonal and centre (the origin for an empty shape).
+struct ShapeExtent {
+    double diagonal = 0;
+    gp_XYZ centre{0, 0, 0};
+};
+ShapeExtent shapeExtent(const TopoDS_Shape& shape);
 
 }  // namespace nurbslod::occ

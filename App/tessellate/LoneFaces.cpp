@@ -64,6 +64,7 @@ std::vector<int> loneBoxFaces(const Model& model, double exactEdgeTolerance) {
 Model loneFaceModel(const Model& model, int face) {
     Model alone;
     alone.boundingBoxDiagonal = model.boundingBoxDiagonal;
+    alone.origin = model.origin;
     alone.faces.push_back(model.faces[face]);
     alone.faces[0].faceIndex = 1;
     std::map<int, int> edgeIndex, vertexIndex;

@@ -26,6 +26,11 @@ struct Model {
     std::vector<ModelEdge> edges;
     std::vector<ModelVertex> vertices;
     double boundingBoxDiagonal = 0;
+    // Where the model's coordinates start: its surfaces, edges and vertices are stored relative
+    // to this point, and tessellateModel places its mesh back by it. The importer moves a model
+    // that lies far from the world's origin next to it (occ/ModelImporter.cpp), so that the
+    // rounding of its coordinates stays far below its tolerances; otherwise it is zero.
+    Vector3 origin = Vector3::Zero();
 };
 
 }  // namespace nurbslod

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <memory>
@@ -15,6 +16,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -2060,10 +2062,10 @@ constexpr double kUndroppedShare = 1.1;
 // first mesh's (tessellateModel).
 constexpr double kRefinedTriangles = 3;
 
-TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
-    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
-        throw std::invalid_argument("the tolerance must be a positive number, not " +
-                                    std::to_string(options.tolerance));
+namespace {
+
+// tessellateModel in the model's own coordinates (Model::origin), the tolerance checked
+TessellationResult tessellateNearOrigin(const Model& model, const TessellationOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     // A lone face (LoneFaces.hpp) whose region is its whole frame box is tessellated again on
     // its own with its free edges as its curve uses: no trimming share, the cells at its border
@@ -2180,6 +2182,51 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
             result.warnings.push_back({static_cast<int>(f) + 1, model.faces[f].warning});
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace
+
+TessellationResult tessellateModel(const Model& model, const TessellationOptions& options) {
+    if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+        throw std::invalid_argument("the tolerance must be a positive number, not " +
+                                    std::to_string(options.tolerance));
+    // Placing the mesh at the model's origin rounds each coordinate by up to half a unit in its
+    // last place, a point by sqrt(3) / 2 of it: a far model's faces are meshed within what is
+    // left of the tolerance, so that the written mesh keeps it. Where rounding would take more
+    // than half, doubles cannot hold the tolerance so far from the world's origin.
+    const double diagonal =
+        std::isfinite(model.boundingBoxDiagonal) ? model.boundingBoxDiagonal : 0;
+    const double magnitude = model.origin.cwiseAbs().maxCoeff() + diagonal;
+    const double rounding =
+        0.5 * std::sqrt(3.0) * std::numeric_limits<double>::epsilon() * magnitude;
+    auto refuse = [&](const std::string& reason) {
+        std::ostringstream message;
+        message << std::setprecision(3) << "the tolerance " << options.tolerance << " is "
+                << reason;
+        throw std::invalid_argument(message.str());
+    };
+    if (options.tolerance < kFinestRelativeTolerance * diagonal) {
+        std::ostringstream reason;
+        reason << std::setprecision(3) << "finer than " << kFinestRelativeTolerance
+               << " of the model's diagonal (" << diagonal
+               << "): the mesh would take tens of millions of triangles or more";
+        refuse(reason.str());
+    }
+    if (rounding > 0.5 * options.tolerance) {
+        std::ostringstream reason;
+        reason << std::setprecision(3) << "finer than the model's coordinates can hold: they reach "
+               << magnitude << " and round by up to " << rounding;
+        refuse(reason.str());
+    }
+    if (model.origin.isZero()) return tessellateNearOrigin(model, options);
+    TessellationOptions nearOrigin = options;
+    nearOrigin.tolerance = options.tolerance - rounding;
+    TessellationResult result = tessellateNearOrigin(model, nearOrigin);
+    result.tolerance = options.tolerance;
+    for (Point3& position : result.mesh.positions) position += model.origin;
+    for (FaceVertexSet& set : result.faceVertices)
+        for (Point3& position : set.positions) position += model.origin;
     return result;
 }
 

@@ -7,6 +7,7 @@ import re
 import shutil
 import tempfile
 
+import FreeCAD
 import Part
 
 import NurbsLOD
@@ -112,6 +113,24 @@ class CommandLine(TempDirTestCase):
                 with self.subTest(option=option, value=value):
                     self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),
                                          option, value])
+
+    def test_tolerances_too_fine(self):
+        # a tolerance far below the model's size would never end or exhaust the memory
+        for option, value in (("--tolerance", "1e-20"), ("--relative", "1e-9")):
+            with self.subTest(option=option, value=value):
+                self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),
+                                     option, value], "of the model's diagonal")
+        # the module refuses it too
+        with self.assertRaisesRegex(ValueError, "of the model's diagonal"):
+            NurbsLOD.tessellate(Part.makeBox(10, 20, 30), tolerance=1e-12)
+        # a box centred at x = 1e13 rounds its coordinates by up to 1e-3: 1e-3 cannot be kept
+        far = os.path.join(self.models, "far_box.brep")
+        Part.makeBox(10, 20, 30, FreeCAD.Vector(1e13, 0, 0)).exportBrep(far)
+        self.assertBadInput(["tessellate", far, "-o", self.path("out.obj"), "--tolerance",
+                             "1e-3"], "coordinates can hold")
+        run = nurbslod("tessellate", far, "-o", self.path("far.obj"), "--tolerance", "0.05")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertEqual(json.loads(run.stdout.strip().splitlines()[-1])["faces_failed"], [])
 
     def test_both_tolerances(self):
         self.assertBadInput(["tessellate", self.model, "-o", self.path("out.obj"),

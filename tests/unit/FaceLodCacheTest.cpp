@@ -4,6 +4,8 @@
 
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -159,6 +161,43 @@ TEST(FaceLodCache, MovingAPoleRetessellatesOnlyThatFace) {
     EXPECT_EQ(cache.bestCached(1, 0, nullptr), other);  // the neighbour is untouched
     EXPECT_DOUBLE_EQ(projectHomogeneous(cache.model().faces[0].surface.pole(0, 0))[flat],
                      corner[flat]);
+}
+
+// A model far from the world's origin is stored next to it (Model::origin): an edit still
+// gives world positions, and a replacement face, imported on its own, lands where it was.
+TEST(FaceLodCache, EditsOfAModelFarFromTheOriginStayInPlace) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(1e5, 0, 0), 10.0, 20.0, 30.0).Shape();
+    FaceLodCache cache(std::make_shared<const Model>(occ::importModel(box)));
+    const Vector3 origin = cache.model().origin;
+    ASSERT_GT(origin.x(), 9e4);  // moved: the box is 2,700 diagonals from the origin
+    const FaceLod* before = cache.bestCached(0, 0, nullptr);
+    ASSERT_NE(before, nullptr);
+    EXPECT_NEAR(before->boxMin[0], 1e5, 0.01);  // the drawn face is where the box is
+    int flat = 0;
+    for (int k = 0; k < 3; ++k)
+        if (before->boxMin[k] == before->boxMax[k]) flat = k;
+    Point3 corner = projectHomogeneous(cache.model().faces[0].surface.pole(0, 0)) + origin;
+    corner[flat] += 5.0;
+    cache.movePole(0, 0, 0, corner, 0);
+    const FaceLod* moved = cache.bestCached(0, 0, nullptr);
+    ASSERT_NE(moved, nullptr);
+    EXPECT_NEAR(moved->boxMax[flat], corner[flat], 0.01);
+    EXPECT_LT(
+        (projectHomogeneous(cache.model().faces[0].surface.pole(0, 0)) + origin - corner).norm(),
+        1e-9);
+    // face 2 replaced by itself, imported alone (its own origin is its own centre)
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(box, TopAbs_FACE, faces);
+    const FaceLod* second = cache.bestCached(1, 0, nullptr);
+    const float secondMin[3] = {second->boxMin[0], second->boxMin[1], second->boxMin[2]};
+    const float secondMax[3] = {second->boxMax[0], second->boxMax[1], second->boxMax[2]};
+    cache.replaceFace(1, occ::importModel(faces(2)), 0);
+    const FaceLod* replaced = cache.bestCached(1, 0, nullptr);
+    ASSERT_NE(replaced, nullptr);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(replaced->boxMin[k], secondMin[k], 0.01) << k;
+        EXPECT_NEAR(replaced->boxMax[k], secondMax[k], 0.01) << k;
+    }
 }
 
 TEST(FaceLodCache, BadEditsAreRefusedAndChangeNothing) {
