@@ -193,6 +193,10 @@ std::optional<FaceMesh> keptMeshRenamed(const FaceTreeMemo::Face& kept,
     return mesh;
 }
 
+// Why a face meshed without a failure has no triangle after the weld and the folds went.
+constexpr const char* kNoTriangleLeft =
+    "no triangle left: its boundary encloses no area on its surface";
+
 // One tessellation of the model (tessellateModel). freeEdgesAsCurveUses: a free edge may be its
 // face's curve use (see boxRegion below); tessellateModel asks for it on lone faces only, with
 // openEdgeLimit the open edges of the face's first mesh (0: none). refineFreeChords (by face,
@@ -2034,8 +2038,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     for (const int f : mesh.triangleFaces) hasTriangle[f - 1] = 1;
     for (int f = 0; f < faceCount; ++f)
         if (failure[f].empty() && !hasTriangle[f])
-            result.failures.push_back(
-                {f + 1, "no triangle left: its boundary encloses no area on its surface"});
+            result.failures.push_back({f + 1, kNoTriangleLeft});
     std::sort(result.failures.begin(), result.failures.end(),
               [](const FaceFailure& a, const FaceFailure& b) { return a.face < b.face; });
 
@@ -2063,6 +2066,9 @@ constexpr double kUndroppedShare = 1.1;
 constexpr double kRefinedTriangles = 3;
 
 namespace {
+
+// How many times a face left without a triangle is tried again at a quarter of the tolerance.
+constexpr int kLostFaceRounds = 3;
 
 // tessellateModel in the model's own coordinates (Model::origin), the tolerance checked
 TessellationResult tessellateNearOrigin(const Model& model, const TessellationOptions& options) {
@@ -2174,6 +2180,30 @@ TessellationResult tessellateNearOrigin(const Model& model, const TessellationOp
                 result = std::move(refined);
         }
     }
+    // A tolerance about the size of a face can leave it no triangle: a sphere of radius 1 beside
+    // a box of 300 at relative 1e-2 (the workbench's coarsest level), its seam one chord and its
+    // cells' corners all on its poles. A finer mesh keeps the tolerance as well: such a face is
+    // tessellated again on its own at a quarter of it, then a sixteenth and a sixty-fourth,
+    // until it has triangles. Its edges are then its own: where it shares one, the seam shows as
+    // open edges, but the face is there.
+    if (!options.keepFaceVertices)
+        for (FaceFailure& failure : result.failures) {
+            if (failure.reason != kNoTriangleLeft) continue;
+            const int f = failure.face - 1;
+            const Model lone = loneFaceModel(model, f);
+            TessellationOptions finer = options;
+            finer.progress = nullptr;
+            for (int round = 0; round < kLostFaceRounds; ++round) {
+                finer.tolerance *= 0.25;
+                const TessellationResult alone = tessellateOnce(lone, finer, false);
+                if (!alone.failures.empty() || alone.mesh.triangles.empty()) continue;
+                replaceFaceTriangles(result.mesh, f + 1, alone.mesh);
+                failure.reason.clear();
+                break;
+            }
+        }
+    std::erase_if(result.failures,
+                  [](const FaceFailure& failure) { return failure.reason.empty(); });
     const std::vector<char> failed = failedFaces(result);
     // single-precision readers of the mesh measure needles right (LargestAngleFirst.hpp)
     startAtLargestAngle(result.mesh);
