@@ -2238,8 +2238,8 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
     };
     if (options.tolerance < kFinestRelativeTolerance * diagonal) {
         std::ostringstream reason;
-        reason << std::setprecision(3) << "finer than " << kFinestRelativeTolerance
-               << " of the model's diagonal (" << diagonal
+        reason << std::setprecision(3) << "finer than " << kFinestRelativeTolerance * diagonal
+               << ", " << kFinestRelativeTolerance << " of the model's diagonal (" << diagonal
                << "): the mesh would take tens of millions of triangles or more";
         refuse(reason.str());
     }

@@ -31,9 +31,15 @@ double resolveTolerance(const ToleranceRequest& request, double diagonal, double
     checkToleranceRequest(request, names);
     if (request.absolute) return *request.absolute;
     const double tolerance = request.relative.value_or(defaultRelative) * diagonal;
-    if (!(std::isfinite(diagonal) && diagonal > 0) || !std::isfinite(tolerance))
+    if (!(std::isfinite(diagonal) && diagonal > 0))
         throw std::invalid_argument("the model has no extent, so " + names.relative +
                                     " cannot be used; give " + names.absolute);
+    if (!std::isfinite(tolerance)) {
+        std::ostringstream message;
+        message << names.relative << " " << request.relative.value_or(defaultRelative)
+                << " times the model's diagonal (" << diagonal << ") is not a finite number";
+        throw std::invalid_argument(message.str());
+    }
     return tolerance;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "tessellate/ToleranceRequest.hpp"
 
@@ -37,4 +38,14 @@ TEST(ToleranceRequest, RelativeNeedsAModelWithExtent) {
     EXPECT_THROW(resolveTolerance({}, std::numeric_limits<double>::quiet_NaN()),
                  std::invalid_argument);
     EXPECT_DOUBLE_EQ(resolveTolerance({.absolute = 2.0}, 0.0), 2.0);  // no diagonal needed
+}
+
+TEST(ToleranceRequest, RelativeThatOverflowsSaysSo) {
+    try {
+        resolveTolerance({.relative = 1e308}, 24.0);
+        FAIL() << "1e308 of 24 was accepted";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("is not a finite number"), std::string::npos)
+            << error.what();
+    }
 }
