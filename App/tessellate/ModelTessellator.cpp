@@ -2067,6 +2067,13 @@ constexpr double kRefinedTriangles = 3;
 
 namespace {
 
+// The least bounding-box diagonal of a model tessellateModel takes: ten times OpenCASCADE's
+// confusion distance (Precision::Confusion, 1e-7), which is also its least edge and vertex
+// tolerance. Below, a vertex's tolerance ball may hold whole faces: a sphere of radius 5e-8
+// (FreeCAD's makeSphere) at relative 1e-3 ran for minutes, its boundary grown to 475,000
+// points, where one of 5.5e-8 took 17 ms.
+constexpr double kSmallestModel = 1e-6;
+
 // How many times a face left without a triangle is tried again at a quarter of the tolerance.
 constexpr int kLostFaceRounds = 3;
 
@@ -2236,6 +2243,13 @@ TessellationResult tessellateModel(const Model& model, const TessellationOptions
                 << reason;
         throw std::invalid_argument(message.str());
     };
+    if (diagonal > 0 && diagonal < kSmallestModel) {
+        std::ostringstream message;
+        message << std::setprecision(3) << "the model is only " << diagonal
+                << " across: OpenCASCADE takes points within 1e-7 of each other for one (its "
+                   "confusion distance), so its faces cannot be told apart; scale it up";
+        throw std::invalid_argument(message.str());
+    }
     if (options.tolerance < kFinestRelativeTolerance * diagonal) {
         std::ostringstream reason;
         reason << std::setprecision(3) << "finer than " << kFinestRelativeTolerance * diagonal

@@ -49,7 +49,8 @@ constexpr double kFinestRelativeTolerance = 1e-6;
 // the faces of an edge. A face that cannot be tessellated is listed in failures with its
 // reason; the others are still meshed. Throws std::invalid_argument, with the reason, for a
 // tolerance that is not a positive finite number, is finer than kFinestRelativeTolerance of the
-// model's diagonal, or is finer than the rounding of the model's coordinates (Model::origin).
+// model's diagonal, or is finer than the rounding of the model's coordinates (Model::origin),
+// and for a model less than 1e-6 across (ten times OpenCASCADE's confusion distance).
 TessellationResult tessellateModel(const Model& model, const TessellationOptions& options);
 
 }  // namespace nurbslod

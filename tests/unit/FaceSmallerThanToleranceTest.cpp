@@ -3,16 +3,20 @@
 // its cells' corners all on its poles). It is tessellated again on its own at a finer tolerance.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 #include <algorithm>
 #include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
 #include <stdexcept>
+#include <string>
 
 #include "occ/MeshVerifier.hpp"
 #include "occ/ModelImporter.hpp"
+#include "occ/ShapeReader.hpp"
 #include "tessellate/ModelTessellator.hpp"
 
 namespace nurbslod {
@@ -47,6 +51,27 @@ TEST(FaceSmallerThanTolerance, AbsurdToleranceStillNamesTheFace) {
     ASSERT_EQ(result.failures.size(), 1u);
     EXPECT_EQ(result.failures.front().face, 1);
     EXPECT_NE(result.failures.front().reason.find("no triangle left"), std::string::npos);
+}
+
+// A model within ten times OpenCASCADE's confusion distance (1e-7) is refused with the reason:
+// a sphere of radius 5e-8 made by FreeCAD (its tolerances 1e-7, its poles' balls holding all of
+// it) ran for minutes at relative 1e-3. Here FreeCAD's sphere is scaled to that radius.
+TEST(FaceSmallerThanTolerance, ModelWithinTheConfusionDistanceIsRefused) {
+    gp_Trsf scale;
+    scale.SetScale(gp_Pnt(0, 0, 0), 5e-8 / 7.0);
+    const TopoDS_Shape sphere = occ::readShape(NURBSLOD_TEST_DATA_DIR "/freecad_sphere.brep");
+    const Model model =
+        occ::importModel(BRepBuilderAPI_Transform(sphere, scale, Standard_True).Shape());
+    ASSERT_LT(model.boundingBoxDiagonal, 1e-6);
+    TessellationOptions options;
+    options.tolerance = 1e-3 * model.boundingBoxDiagonal;
+    try {
+        tessellateModel(model, options);
+        FAIL() << "a model " << model.boundingBoxDiagonal << " across was tessellated";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("confusion distance"), std::string::npos)
+            << error.what();
+    }
 }
 
 }  // namespace
