@@ -28,9 +28,10 @@ TEST(SliverFace, KeepsItsOwnTrianglesAndIsMeasured) {
             return std::count(result.mesh.triangleFaces.begin(), result.mesh.triangleFaces.end(),
                               face) > 0;
         };
-        // above T^2 at relative 1e-4 only; at 1e-3 they are listed as failed, not missing
-        EXPECT_EQ(hasTriangles(15), relative < 1e-3) << "relative " << relative;
-        EXPECT_EQ(hasTriangles(28), relative < 1e-3) << "relative " << relative;
+        // above T^2 at relative 1e-4 only; at 1e-3 the weld left them none, and they are
+        // meshed again alone at a finer tolerance (tessellateModel)
+        EXPECT_TRUE(hasTriangles(15)) << "relative " << relative;
+        EXPECT_TRUE(hasTriangles(28)) << "relative " << relative;
         const occ::VerificationReport report =
             occ::verifyMesh(shape, result.mesh, options.tolerance);
         EXPECT_TRUE(report.facesMissing.empty()) << "relative " << relative;
