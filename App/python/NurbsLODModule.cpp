@@ -129,12 +129,22 @@ double absoluteTolerance(const Model& model, const ToleranceRequest& request) {
     }
 }
 
+// tessellateModel, its refusals (a tolerance finer than the model can take) named as the
+// module's own
+TessellationResult tessellateOrRefuse(const Model& model, const TessellationOptions& options) {
+    try {
+        return tessellateModel(model, options);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument(std::string("NurbsLOD: ") + error.what());
+    }
+}
+
 // Runs without the GIL: reading, importing and tessellating are pure C++.
 TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
                                     TessellationOptions options, SourceSeconds& seconds) {
     const Model model = importSource(source, options.threads, seconds);
     options.tolerance = absoluteTolerance(model, request);
-    return tessellateModel(model, options);
+    return tessellateOrRefuse(model, options);
 }
 
 struct Call {
@@ -313,7 +323,7 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
         options.flatCellsByDistance = false;
         options.evenColumnsCutAcross = false;
         options.middleSplits = false;
-        result = tessellateModel(model, options);
+        result = tessellateOrRefuse(model, options);
         analysis = analysisMesh(model, result.mesh);
     }
     py::dict out;
