@@ -20,11 +20,12 @@ def shapes_of(objects):
     return [obj.Shape for obj in objects if hasattr(obj, "Shape") and not obj.Shape.isNull()]
 
 
-def export_objects(objects, path, relative=1e-3):
+def export_objects(objects, path, relative=1e-3, progress=None):
     """Tessellates the objects' shapes together and writes one mesh file; returns the summary.
 
     Several objects become one compound, so face ids in the file count across all of them in
-    selection order. Raises ValueError when no object has a shape.
+    selection order. progress: None or progress(stage, done, total), as NurbsLOD.export takes
+    it. Raises ValueError when no object has a shape.
     """
     import Part
 
@@ -34,7 +35,18 @@ def export_objects(objects, path, relative=1e-3):
     if not shapes:
         raise ValueError("NurbsLOD: select at least one object with a shape")
     shape = shapes[0] if len(shapes) == 1 else Part.makeCompound(shapes)
-    return NurbsLOD.export(shape, path, relative=relative)
+    return NurbsLOD.export(shape, path, relative=relative, progress=progress)
+
+
+def progress_text(stage, done, total):
+    """The progress dialog's line for a stage of the export."""
+    verb = "Importing" if stage == "import" else "Tessellating"
+    return "{} faces: {} of {}".format(verb, done, total)
+
+
+def progress_value(stage, done, total):
+    """The progress bar's value out of 2 * total: the import is the first half."""
+    return done + (total if stage == "tessellate" else 0)
 
 
 def describe(summary):
@@ -73,14 +85,30 @@ class ExportCertifiedMesh:
             return
         if not os.path.splitext(path)[1]:  # the writer picks the format by extension
             path += chosen_filter[chosen_filter.rfind("*") + 1 : -1] or ".obj"
+        # A model of thousands of faces takes seconds to minutes: the faces done are shown as
+        # they come (the module calls back in this thread, which keeps the window drawn). The
+        # work cannot be stopped midway, so the dialog has no cancel button.
+        dialog = QtGui.QProgressDialog(
+            "Exporting certified mesh", None, 0, 1, FreeCADGui.getMainWindow())
+        dialog.setWindowTitle("NurbsLOD")
+        dialog.setWindowModality(QtCore.Qt.WindowModal)
+        dialog.setMinimumDuration(500)
+
+        def report(stage, done, total):
+            dialog.setMaximum(max(1, 2 * total))
+            dialog.setValue(progress_value(stage, done, total))
+            dialog.setLabelText(progress_text(stage, done, total))
+            QtGui.QApplication.processEvents()
+
         QtGui.QApplication.setOverrideCursor(QtGui.QCursor(QtCore.Qt.WaitCursor))
         try:
-            summary = export_objects(objects, path)
+            summary = export_objects(objects, path, progress=report)
         except Exception as error:  # a command must not raise: tell the user instead
             FreeCAD.Console.PrintError("NurbsLOD: export failed: {}\n".format(error))
             return
         finally:
             QtGui.QApplication.restoreOverrideCursor()
+            dialog.close()
         FreeCAD.Console.PrintMessage(describe(summary))
         for failure in summary["faces_failed"]:
             FreeCAD.Console.PrintWarning(

@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "CallerThreadProgress.hpp"
 #include "io/MeshWriter.hpp"
 #include "occ/ModelImporter.hpp"
 #include "occ/ShapeReader.hpp"
@@ -107,12 +108,13 @@ struct SourceSeconds {
 };
 
 // Runs without the GIL: reading and importing are pure C++.
-Model importSource(const ShapeSource& source, int threads, SourceSeconds& seconds) {
+Model importSource(const ShapeSource& source, int threads, SourceSeconds& seconds,
+                   const std::function<void(std::size_t, std::size_t)>& progress = nullptr) {
     const Clock::time_point start = Clock::now();
     const TopoDS_Shape shape =
         source.isPath ? occ::readShape(source.text) : occ::shapeFromBrepString(source.text);
     const Clock::time_point read = Clock::now();
-    Model model = occ::importModel(shape, threads);
+    Model model = occ::importModel(shape, threads, progress);
     seconds.read = std::chrono::duration<double>(read - start).count();
     seconds.import = std::chrono::duration<double>(Clock::now() - read).count();
     if (model.faces.empty()) {
@@ -140,9 +142,11 @@ TessellationResult tessellateOrRefuse(const Model& model, const TessellationOpti
 }
 
 // Runs without the GIL: reading, importing and tessellating are pure C++.
-TessellationResult tessellateSource(const ShapeSource& source, const ToleranceRequest& request,
-                                    TessellationOptions options, SourceSeconds& seconds) {
-    const Model model = importSource(source, options.threads, seconds);
+TessellationResult tessellateSource(
+    const ShapeSource& source, const ToleranceRequest& request, TessellationOptions options,
+    SourceSeconds& seconds,
+    const std::function<void(std::size_t, std::size_t)>& importProgress = nullptr) {
+    const Model model = importSource(source, options.threads, seconds, importProgress);
     options.tolerance = absoluteTolerance(model, request);
     return tessellateOrRefuse(model, options);
 }
@@ -153,12 +157,17 @@ struct Call {
     ToleranceRequest tolerance;
     TessellationOptions options;
     mutable SourceSeconds sourceSeconds;  // filled in by run()
+    py::object progress = py::none();     // progress(stage, done, total), or None
 };
 
 // Checks every argument before the (possibly long) work starts.
 Call parseCall(const py::object& shape, std::optional<double> tolerance,
-               std::optional<double> relative, const std::string& mode, int threads) {
+               std::optional<double> relative, const std::string& mode, int threads,
+               const py::object& progress) {
     Call call;
+    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+        throw py::type_error("NurbsLOD: progress must be None or a callable (stage, done, total)");
+    call.progress = progress;
     call.tolerance = toleranceRequest(tolerance, relative);
     call.options.mode = errorMode(mode);
     call.options.threads = threadCount(threads);
@@ -167,8 +176,20 @@ Call parseCall(const py::object& shape, std::optional<double> tolerance,
 }
 
 TessellationResult run(const Call& call) {
-    py::gil_scoped_release release;
-    return tessellateSource(call.source, call.tolerance, call.options, call.sourceSeconds);
+    if (call.progress.is_none()) {
+        py::gil_scoped_release release;
+        return tessellateSource(call.source, call.tolerance, call.options, call.sourceSeconds);
+    }
+    TessellationResult result;
+    runReportingProgress(
+        [&](JobProgress& progress) {
+            TessellationOptions options = call.options;
+            options.progress = progress.stage(1);
+            result = tessellateSource(call.source, call.tolerance, options, call.sourceSeconds,
+                                      progress.stage(0));
+        },
+        call.progress);
+    return result;
 }
 
 // The summary has the keys of the command line's JSON summary, so scripts can use either.
@@ -227,8 +248,9 @@ py::array_t<std::uint32_t> indexArray(const std::vector<std::array<std::uint32_t
 }
 
 py::dict tessellate(const py::object& shape, std::optional<double> tolerance,
-                    std::optional<double> relative, const std::string& mode, int threads) {
-    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+                    std::optional<double> relative, const std::string& mode, int threads,
+                    const py::object& progress) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
     const TessellationResult result = run(call);
     const Mesh& mesh = result.mesh;
     py::dict out;
@@ -244,8 +266,8 @@ py::dict tessellate(const py::object& shape, std::optional<double> tolerance,
 
 py::dict exportMesh(const py::object& shape, const py::object& path,
                     std::optional<double> tolerance, std::optional<double> relative,
-                    const std::string& mode, int threads) {
-    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+                    const std::string& mode, int threads, const py::object& progress) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
     const std::string outPath = py::module_::import("os").attr("fspath")(path).cast<std::string>();
     const TessellationResult result = run(call);
     {
@@ -256,7 +278,8 @@ py::dict exportMesh(const py::object& shape, const py::object& path,
 }
 
 py::object toMesh(const py::object& shape, std::optional<double> tolerance,
-                  std::optional<double> relative, const std::string& mode, int threads) {
+                  std::optional<double> relative, const std::string& mode, int threads,
+                  const py::object& progress) {
     // Imported first: outside FreeCAD there is no point tessellating.
     py::module_ meshModule;
     py::module_ freecad;
@@ -267,7 +290,7 @@ py::object toMesh(const py::object& shape, std::optional<double> tolerance,
         throw py::import_error(std::string("NurbsLOD.to_mesh needs FreeCAD's Mesh module: ") +
                                error.what());
     }
-    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
     const TessellationResult result = run(call);
     const Mesh& mesh = result.mesh;
 
@@ -305,7 +328,7 @@ py::array_t<double> parameterArray(const std::vector<Point2>& parameters) {
 
 py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance,
                         std::optional<double> relative, const std::string& mode, int threads) {
-    const Call call = parseCall(shape, tolerance, relative, mode, threads);
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, py::none());
     TessellationResult result;
     AnalysisMesh analysis;
     {
@@ -375,10 +398,15 @@ PYBIND11_MODULE(NurbsLOD, m) {
 
     m.def("tessellate", &tessellate, py::arg("shape"), py::arg("tolerance") = py::none(),
           py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          py::arg("progress") = py::none(),
           R"(Tessellates every face of the shape within the tolerance.
 
 mode: "guaranteed" (the mesh never deviates more than the tolerance) or "approximate"
 (the paper's approximate error: fewer triangles). threads: 0 uses all cores.
+progress: None, or a callable progress(stage, done, total), stage "import" or "tessellate",
+called in the caller's thread about ten times a second and when a stage ends (a FreeCAD
+command may update a progress dialog and process events there); an exception it raises
+stops the reports and is raised when the work has ended.
 
 Returns a dict of numpy arrays and a summary:
   points           (N, 3) float64  vertex positions, shared where faces meet
@@ -397,7 +425,7 @@ ValueError) for a file or shape that cannot be read.)");
 
     m.def("export", &exportMesh, py::arg("shape"), py::arg("path"),
           py::arg("tolerance") = py::none(), py::arg("relative") = py::none(),
-          py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          py::arg("mode") = "guaranteed", py::arg("threads") = 0, py::arg("progress") = py::none(),
           R"(Tessellates the shape like tessellate() and writes the mesh to path.
 
 The format follows the extension: .obj (one group per face, "g FaceN"), .ply, .stl, .off.
@@ -426,6 +454,7 @@ Returns a dict of numpy arrays and a summary:
 
     m.def("to_mesh", &toMesh, py::arg("shape"), py::arg("tolerance") = py::none(),
           py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
+          py::arg("progress") = py::none(),
           R"(Tessellates the shape like tessellate() and returns a FreeCAD Mesh.Mesh.
 
 Needs FreeCAD (freecad or freecadcmd).)");

@@ -95,3 +95,59 @@ class Preferences(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ExportCommandInTheGui(unittest.TestCase):
+    """The command "Export certified mesh" as a user runs it: the file dialog (answered here),
+    then a progress dialog that the export fills in as the faces are done."""
+
+    def test_export_writes_the_file_and_fills_the_progress_dialog(self):
+        import shutil
+        import tempfile
+
+        import Part
+        from PySide import QtGui
+
+        import NurbsLODExportCommand
+
+        FreeCADGui.activateWorkbench("NurbsLODWorkbench")
+        document = FreeCAD.newDocument("ExportCommand")
+        self.addCleanup(gt.close, document)
+        obj = document.addObject("Part::Feature", "Bracket")
+        obj.Shape = Part.makeBox(20, 10, 5).cut(Part.makeCylinder(3, 5, FreeCAD.Vector(10, 5, 0)))
+        document.recompute()
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(obj)
+        self.addCleanup(FreeCADGui.Selection.clearSelection)
+        folder = tempfile.mkdtemp(prefix="nurbslod-export-")
+        self.addCleanup(shutil.rmtree, folder, True)
+        path = os.path.join(folder, "bracket")  # no extension: the chosen filter's is added
+
+        dialogs = []
+
+        class RecordingProgressDialog(QtGui.QProgressDialog):
+            def __init__(self, *args):
+                super().__init__(*args)
+                self.values = []
+                dialogs.append(self)
+
+            def setValue(self, value):
+                self.values.append((value, self.maximum()))
+                super().setValue(value)
+
+        saved = (QtGui.QFileDialog.getSaveFileName, QtGui.QProgressDialog)
+        QtGui.QFileDialog.getSaveFileName = staticmethod(
+            lambda *args, **kwargs: (path, "Stanford PLY (*.ply)"))
+        QtGui.QProgressDialog = RecordingProgressDialog
+        try:
+            FreeCADGui.runCommand(NurbsLODExportCommand.COMMAND_NAME)
+        finally:
+            QtGui.QFileDialog.getSaveFileName, QtGui.QProgressDialog = saved
+        self.assertTrue(os.path.getsize(path + ".ply") > 0)
+        self.assertEqual(len(dialogs), 1)
+        values = dialogs[0].values
+        self.assertTrue(values, "the progress dialog got no value")
+        # the bar ends full: both stages reported every face
+        self.assertEqual(values[-1][0], values[-1][1])
+        self.assertEqual(values[-1][1], 2 * len(obj.Shape.Faces))
+        self.assertEqual([value for value, _ in values], sorted(value for value, _ in values))

@@ -50,6 +50,30 @@ class Export(TempDirTestCase):
                     NurbsLOD.export(self.shape, path, tolerance=0.02)
                 self.assertFalse(os.path.exists(path))
 
+    def test_progress_runs_in_the_callers_thread(self):
+        import threading
+        caller = threading.get_ident()
+        threads = set()
+        calls = []
+
+        def report(stage, done, total):
+            threads.add(threading.get_ident())
+            calls.append((stage, done, total))
+
+        NurbsLOD.export(self.shape, self.path("mesh.obj"), tolerance=0.02, progress=report)
+        self.assertEqual(threads, {caller})
+        self.assertEqual(calls[-1][0], "tessellate")
+
+    def test_progress_errors_are_raised_after_the_work(self):
+        def broken(stage, done, total):
+            raise KeyError("stopped by the callback")
+
+        path = self.path("mesh.obj")
+        with self.assertRaises(KeyError):
+            NurbsLOD.export(self.shape, path, tolerance=0.02, progress=broken)
+        with self.assertRaises(TypeError):
+            NurbsLOD.export(self.shape, path, tolerance=0.02, progress=42)
+
     def test_bad_tolerance_writes_nothing(self):
         path = self.path("mesh.obj")
         with self.assertRaises(ValueError):
@@ -95,6 +119,29 @@ class ExportCommand(TempDirTestCase):
         self.assertEqual(summary["faces"], len(box.Shape.Faces) + len(sphere.Shape.Faces))
         self.assertEqual(Mesh.Mesh(path).CountFacets, summary["triangles"])
         self.assertIn("triangles", NurbsLODExportCommand.describe(summary))
+
+    def test_progress_reaches_every_face_of_both_stages(self):
+        doc = FreeCAD.newDocument("NurbsLODExportProgress")
+        self.addCleanup(FreeCAD.closeDocument, doc.Name)
+        box = doc.addObject("Part::Box", "Box")
+        doc.recompute()
+        calls = []
+        summary = NurbsLODExportCommand.export_objects(
+            [box], self.path("box.obj"), progress=lambda *call: calls.append(call))
+        faces = summary["faces"]
+        # each stage ends with all faces done, even one faster than the reports
+        self.assertEqual(calls[-1], ("tessellate", faces, faces))
+        self.assertIn(("import", faces, faces), calls)
+        stages = [stage for stage, _, _ in calls]
+        self.assertEqual(stages, sorted(stages, key=["import", "tessellate"].index))
+        for stage, done, total in calls:
+            self.assertEqual(total, faces)
+            self.assertLessEqual(done, total)
+        values = [NurbsLODExportCommand.progress_value(*call) for call in calls]
+        self.assertEqual(values, sorted(values))
+        self.assertEqual(values[-1], 2 * faces)
+        self.assertEqual(NurbsLODExportCommand.progress_text("import", 3, 6),
+                         "Importing faces: 3 of 6")
 
     def test_nothing_with_a_shape_raises_value_error(self):
         with self.assertRaisesRegex(ValueError, "select"):
