@@ -4,11 +4,17 @@ export_objects() does the work and needs no GUI, so it is tested headless; the c
 class only adds the file dialog and the report view.
 """
 
+import math
 import os
 
 import FreeCAD
 
 COMMAND_NAME = "NurbsLOD_ExportCertifiedMesh"
+
+# Edit > Preferences > NurbsLOD > Export certified mesh writes these.
+PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+DEFAULT_RELATIVE = 1e-3
+MODES = ("guaranteed", "approximate")  # the preference's combo box index
 
 FILE_FILTERS = ";;".join(
     ("Wavefront OBJ (*.obj)", "Stanford PLY (*.ply)", "STL (*.stl)", "Object File Format (*.off)")
@@ -20,12 +26,24 @@ def shapes_of(objects):
     return [obj.Shape for obj in objects if hasattr(obj, "Shape") and not obj.Shape.isNull()]
 
 
-def export_objects(objects, path, relative=1e-3, progress=None):
+def export_settings():
+    """The preferences' export tolerance (a fraction of the selection's size) and mode; the
+    defaults where a value is missing or out of range."""
+    group = FreeCAD.ParamGet(PARAMETER_PATH)
+    relative = group.GetFloat("ExportRelative", DEFAULT_RELATIVE)
+    if not (math.isfinite(relative) and 1e-6 <= relative <= 0.1):
+        relative = DEFAULT_RELATIVE
+    index = group.GetInt("ExportMode", 0)
+    return relative, MODES[index] if 0 <= index < len(MODES) else MODES[0]
+
+
+def export_objects(objects, path, relative=None, mode=None, progress=None):
     """Tessellates the objects' shapes together and writes one mesh file; returns the summary.
 
     Several objects become one compound, so face ids in the file count across all of them in
-    selection order. progress: None or progress(stage, done, total), as NurbsLOD.export takes
-    it. Raises ValueError when no object has a shape.
+    selection order. relative and mode: the preferences' (export_settings) where None.
+    progress: None or progress(stage, done, total), as NurbsLOD.export takes it. Raises
+    ValueError when no object has a shape.
     """
     import Part
 
@@ -35,7 +53,10 @@ def export_objects(objects, path, relative=1e-3, progress=None):
     if not shapes:
         raise ValueError("NurbsLOD: select at least one object with a shape")
     shape = shapes[0] if len(shapes) == 1 else Part.makeCompound(shapes)
-    return NurbsLOD.export(shape, path, relative=relative, progress=progress)
+    preferred_relative, preferred_mode = export_settings()
+    return NurbsLOD.export(shape, path,
+                           relative=preferred_relative if relative is None else relative,
+                           mode=preferred_mode if mode is None else mode, progress=progress)
 
 
 def progress_text(stage, done, total):
@@ -65,7 +86,7 @@ class ExportCertifiedMesh:
             "Pixmap": NurbsLODPaths.icon("NurbsLOD.svg"),
             "MenuText": "Export certified mesh",
             "ToolTip": "Write the selected objects as a mesh that deviates from them by at most "
-            "1/1000 of their size",
+            "the tolerance of the preferences (by default 1/1000 of their size)",
         }
 
     def IsActive(self):

@@ -66,10 +66,11 @@ class Preferences(unittest.TestCase):
 
         page = os.path.join(gt.ROOT, "Resources", "ui", "NurbsLODPreferences.ui")
         widget = FreeCADGui.PySideUic.loadUi(page)
-        for name in ("pixelError", "frameBudget", "normalError", "zebraWidth"):
+        for name in ("pixelError", "frameBudget", "normalError", "zebraWidth", "exportRelative"):
             self.assertIsNotNone(widget.findChild(QtGui.QDoubleSpinBox, name), name)
         for name in ("isophoteCount", "zebraStripes"):
             self.assertIsNotNone(widget.findChild(QtGui.QSpinBox, name), name)
+        self.assertEqual(widget.findChild(QtGui.QComboBox, "exportMode").count(), 2)
 
     def test_parameters_reach_the_node(self):
         import Part
@@ -92,9 +93,6 @@ class Preferences(unittest.TestCase):
         NurbsLODGui.enable_adaptive_display(obj, pixel_error=0.25)
         self.assertAlmostEqual(NurbsLODGui.stats(obj)["pixel_error"], 0.25, places=6)
 
-
-if __name__ == "__main__":
-    unittest.main()
 
 
 class ExportCommandInTheGui(unittest.TestCase):
@@ -151,3 +149,7 @@ class ExportCommandInTheGui(unittest.TestCase):
         self.assertEqual(values[-1][0], values[-1][1])
         self.assertEqual(values[-1][1], 2 * len(obj.Shape.Faces))
         self.assertEqual([value for value, _ in values], sorted(value for value, _ in values))
+
+
+if __name__ == "__main__":
+    unittest.main()

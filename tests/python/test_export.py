@@ -143,6 +143,27 @@ class ExportCommand(TempDirTestCase):
         self.assertEqual(NurbsLODExportCommand.progress_text("import", 3, 6),
                          "Importing faces: 3 of 6")
 
+    def test_preferences_set_the_tolerance_and_mode(self):
+        group = FreeCAD.ParamGet(NurbsLODExportCommand.PARAMETER_PATH)
+        self.addCleanup(group.RemFloat, "ExportRelative")
+        self.addCleanup(group.RemInt, "ExportMode")
+        self.assertEqual(NurbsLODExportCommand.export_settings(), (1e-3, "guaranteed"))
+        group.SetFloat("ExportRelative", 1e-2)
+        group.SetInt("ExportMode", 1)
+        self.assertEqual(NurbsLODExportCommand.export_settings(), (1e-2, "approximate"))
+        doc = FreeCAD.newDocument("NurbsLODExportPreferences")
+        self.addCleanup(FreeCAD.closeDocument, doc.Name)
+        sphere = doc.addObject("Part::Sphere", "Sphere")
+        doc.recompute()
+        summary = NurbsLODExportCommand.export_objects([sphere], self.path("sphere.obj"))
+        self.assertEqual(summary["mode"], "approximate")
+        self.assertAlmostEqual(summary["tolerance"], 1e-2 * sphere.Shape.BoundBox.DiagonalLength,
+                               delta=1e-3 * summary["tolerance"])
+        # values the page cannot hold fall back to the defaults
+        group.SetFloat("ExportRelative", -1.0)
+        group.SetInt("ExportMode", 7)
+        self.assertEqual(NurbsLODExportCommand.export_settings(), (1e-3, "guaranteed"))
+
     def test_nothing_with_a_shape_raises_value_error(self):
         with self.assertRaisesRegex(ValueError, "select"):
             NurbsLODExportCommand.export_objects([], self.path("nothing.obj"))
