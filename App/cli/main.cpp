@@ -7,6 +7,9 @@
 #include <tbb/global_control.h>
 
 #include <CLI/CLI.hpp>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Standard_Failure.hxx>
 #include <algorithm>
 #include <charconv>
@@ -391,7 +394,21 @@ int runVerify(const VerifyArguments& arguments) {
 
 }  // namespace
 
+// OpenCASCADE's readers report on its default messenger, which prints to stdout
+// (`*** ERR StepReaderData : Unresolved Reference` for a broken STEP file, sent as information;
+// the IGES reader's count of entities): scripts read the summary from stdout, so these go to
+// stderr, with the progress, and without the terminal colours OpenCASCADE adds.
+void openCascadeMessagesToStderr() {
+    const Handle(Message_Messenger)& messenger = Message::DefaultMessenger();
+    messenger->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    Handle(Message_PrinterOStream) printer =
+        new Message_PrinterOStream("cerr", Standard_False, Message_Info);
+    printer->SetToColorize(Standard_False);
+    messenger->AddPrinter(printer);
+}
+
 int main(int argc, char** argv) {
+    openCascadeMessagesToStderr();
     CLI::App app{"NurbsLOD: tessellate trimmed NURBS B-rep models with a guaranteed error"};
     app.footer(
         "Exit codes: 0 success (verify: PASS), 1 verify FAIL, 2 bad input, 3 internal error.");

@@ -107,6 +107,26 @@ class CommandLine(TempDirTestCase):
         self.assertEqual(status, 0)
         self.assertIn("OpenCASCADE could translate", result or "(the process died)")
 
+    def test_opencascade_messages_go_to_stderr(self):
+        # a face that names a missing loop: OpenCASCADE's STEP reader reports the unresolved
+        # reference on its messenger, which printed it on stdout, before the summary
+        with open(self.model) as step:
+            text = step.read()
+        broken = self.path("unresolved.step")
+        with open(broken, "w") as out:
+            out.write(re.sub(r"ADVANCED_FACE\('[^']*',\(#\d+\)",
+                             "ADVANCED_FACE('',(#999999)", text, count=1))
+        run = nurbslod("tessellate", broken, "-o", self.path("out.obj"), "--tolerance", "0.1")
+        self.assertIn("Unresolved Reference", run.stderr)
+        self.assertNotIn("\x1b[", run.stderr)  # no terminal colours in a log
+        self.assertNotIn("StepReaderData", run.stdout)
+        # what is left of the box: a mesh and its summary alone on stdout, or a message
+        if run.returncode == 0:
+            self.assertEqual(len(run.stdout.strip().splitlines()), 1, run.stdout)
+        else:
+            self.assertEqual(run.returncode, BAD_INPUT, run.stderr)
+            self.assertEqual(run.stdout.strip(), "")
+
     def test_bad_tolerances(self):
         for option in ("--tolerance", "--relative"):
             for value in ("0", "-1", "nan", "inf", "abc"):
