@@ -20,6 +20,9 @@ import math
 import FreeCAD
 
 PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+# The least diagonal the tessellator takes (ten times OpenCASCADE's confusion distance); a
+# smaller shape gets no fallback mesh either.
+SMALLEST_MODEL = 1e-6
 
 # The defaults of the preferences page (Resources/ui/NurbsLODPreferences.ui); a macro's
 # arguments override them.
@@ -179,7 +182,16 @@ def _fallback_node(obj, failures):
     points = []
     indices = []
     shape = local_shape(obj)
-    deviation = max(shape.BoundBox.DiagonalLength * 1e-3, 1e-6)
+    diagonal = shape.BoundBox.DiagonalLength
+    if not diagonal >= SMALLEST_MODEL:
+        # OpenCASCADE's mesher ran for ever on a sphere of radius 5e-8 (FreeCAD's own display
+        # refuses it): the GUI thread must not wait for it
+        FreeCAD.Console.PrintWarning(
+            "NurbsLOD: {}: the shape is only {:.3g} across, below what OpenCASCADE can mesh: "
+            "it is not drawn\n".format(obj.Label, diagonal)
+        )
+        return None
+    deviation = diagonal * 1e-3
     for failure in failures:
         face = shape.Faces[failure["face"] - 1]
         try:

@@ -151,5 +151,28 @@ class ExportCommandInTheGui(unittest.TestCase):
         self.assertEqual([value for value, _ in values], sorted(value for value, _ in values))
 
 
+class ShapeBelowTheConfusionDistance(unittest.TestCase):
+    """A sphere of radius 5e-8: the tessellator refuses it, and the fallback to FreeCAD's own
+    mesher, which ran for ever on it in the GUI thread, is not tried."""
+
+    def test_adaptive_display_returns_and_names_the_face(self):
+        import time
+
+        import Part
+
+        document = FreeCAD.newDocument("Tiny")
+        self.addCleanup(gt.close, document)
+        obj = document.addObject("Part::Feature", "Tiny")
+        obj.Shape = Part.makeSphere(5e-8)
+        document.recompute()
+        start = time.time()
+        NurbsLODGui.enable_adaptive_display(obj, wait=False)
+        self.assertTrue(NurbsLODGui.wait_until_ready(obj, 30))
+        self.assertLess(time.time() - start, 30)
+        self.addCleanup(NurbsLODGui.disable_adaptive_display, obj)
+        FreeCADGui.updateGui()
+        self.assertEqual(NurbsLODGui.stats(obj)["faces_failed"], 1)
+
+
 if __name__ == "__main__":
     unittest.main()
