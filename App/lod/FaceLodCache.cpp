@@ -4,8 +4,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "tessellate/ModelOrigin.hpp"
 
@@ -16,6 +21,40 @@ using Clock = std::chrono::steady_clock;
 }
 
 namespace {
+
+// An edit may put a face's poles at most this many model diagonals from the middle of the
+// face's poles before the edit. The levels' tolerances are fractions of the model's diagonal:
+// a pole of a sphere of radius 10 moved to x = 1e6 asked for a face that size at a tolerance
+// of 0.35, which the edit's own level (made in the GUI thread) tessellated for more than a
+// minute (1e4 away: 1 s).
+constexpr double kEditReach = 100;
+
+// The middle of the surface's poles' bounding box.
+Point3 middleOfPoles(const BSplineSurface& surface) {
+    Point3 low = Point3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (const HomogeneousPoint3& pole : surface.poles()) {
+        const Point3 p = projectHomogeneous(pole);
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    return 0.5 * (low + high);
+}
+
+// Throws std::invalid_argument where `points` reach farther than kEditReach diagonals from
+// `middle`.
+template <typename Points>
+void requireWithinReach(const Points& points, const Point3& middle, double diagonal, int face) {
+    const double reach = kEditReach * diagonal;
+    for (const Point3& p : points)
+        if (!((p - middle).norm() <= reach)) {
+            std::ostringstream message;
+            message << std::setprecision(3) << "face " << face + 1 << ": a pole would lie "
+                    << (p - middle).norm() << " from the face, more than " << kEditReach
+                    << " times the model's size (" << diagonal << ")";
+            throw std::invalid_argument(message.str());
+        }
+}
+
 int workerThreads() {
     return std::max(1, tbb::info::default_concurrency() - 1);
 }
@@ -224,6 +263,11 @@ double FaceLodCache::replaceFace(int face, const Model& replacement, int level) 
     }
     edited->vertices.insert(edited->vertices.end(), placed.vertices.begin(), placed.vertices.end());
     TrimmedSurface surface = placed.faces.front();
+    std::vector<Point3> poles;
+    for (const HomogeneousPoint3& pole : surface.surface.poles())
+        poles.push_back(projectHomogeneous(pole));
+    requireWithinReach(poles, middleOfPoles(model_->faces[face].surface),
+                       model_->boundingBoxDiagonal, face);
     surface.faceIndex = face + 1;
     for (TrimLoop& loop : surface.loops)
         for (TrimCurve& curve : loop.curves)
@@ -244,6 +288,8 @@ double FaceLodCache::movePole(int face, int i, int j, const Point3& position, in
     if (!position.allFinite())
         throw std::invalid_argument("face " + std::to_string(face + 1) +
                                     ": the pole position is not finite");
+    requireWithinReach(std::array<Point3, 1>{position - model_->origin}, middleOfPoles(surface),
+                       model_->boundingBoxDiagonal, face);
     const auto start = Clock::now();
     auto edited = std::make_shared<Model>(*model_);
     HomogeneousPoint3& pole = edited->faces[face].surface.pole(i, j);

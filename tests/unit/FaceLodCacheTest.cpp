@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include "lod/FaceLod.hpp"
 #include "lod/FaceLodCache.hpp"
@@ -210,6 +211,32 @@ TEST(FaceLodCache, BadEditsAreRefusedAndChangeNothing) {
     EXPECT_THROW(cache.movePole(99, 0, 0, Point3(0, 0, 0), 0), std::out_of_range);
     EXPECT_THROW(cache.replaceFace(0, Model{}, 0), std::invalid_argument);
     EXPECT_EQ(cache.bestCached(0, 0, nullptr), before);
+}
+
+// A pole moved a million units from a sphere of radius 10 made the edit's level (in the GUI
+// thread) tessellate a face that size at the model's tolerance for more than a minute: an edit
+// reaches at most 100 model diagonals from the face, and is refused beyond with the reason.
+TEST(FaceLodCache, EditsFarBeyondTheModelAreRefusedAtOnce) {
+    FaceLodCache cache(sphereModel());
+    const FaceLod* before = cache.bestCached(0, 0, nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    for (const double x : {1e6, 1e300}) {
+        try {
+            cache.movePole(0, 2, 2, Point3(x, 0, 0), 0);
+            ADD_FAILURE() << "a pole at " << x << " was accepted";
+        } catch (const std::invalid_argument& error) {
+            EXPECT_NE(std::string(error.what()).find("times the model's size"), std::string::npos)
+                << error.what();
+        }
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+    EXPECT_EQ(cache.bestCached(0, 0, nullptr), before);
+    // within reach: taken (10 diagonals out)
+    EXPECT_GE(cache.movePole(0, 2, 2, Point3(10 * cache.model().boundingBoxDiagonal, 0, 0), 0),
+              0.0);
+    // a replacement face far away, as an edit's BREP could bring it
+    const Model far = occ::importModel(BRepPrimAPI_MakeSphere(gp_Pnt(1e6, 0, 0), 10.0).Shape());
+    EXPECT_THROW(cache.replaceFace(0, far, 0), std::invalid_argument);
 }
 
 TEST(FaceLodCache, ALevelMadeForTheOldSurfaceIsDroppedAfterAnEdit) {
