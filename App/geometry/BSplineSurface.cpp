@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "geometry/BasisFunctions.hpp"
@@ -46,6 +47,16 @@ HomogeneousPoint3 BSplineSurface::homogeneousPoint(double u, double v) const {
         sum += Nu[k] * inner;
     }
     return sum;
+}
+
+std::pair<Point3, Point3> BSplineSurface::controlNetBox() const {
+    Point3 low = Point3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (const HomogeneousPoint3& pole : poles_) {
+        const Point3 p = projectHomogeneous(pole);
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    return {low, high};
 }
 
 Point3 BSplineSurface::point(double u, double v) const {

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/KnotVector.hpp"
@@ -33,6 +34,9 @@ public:
     HomogeneousPoint3& pole(int i, int j) { return poles_[i * countV_ + j]; }
     const std::vector<HomogeneousPoint3>& poles() const { return poles_; }
     bool isRational() const;
+    // The corners (low, high) of the axis-aligned box of the control points, projected; with
+    // positive weights the surface lies in their hull, so in the box.
+    std::pair<Point3, Point3> controlNetBox() const;
 
     Point3 point(double u, double v) const;
     FirstDerivatives derivatives(double u, double v) const;

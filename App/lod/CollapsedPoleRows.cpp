@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace nurbslod::gui {
 
@@ -41,11 +40,7 @@ int boundaryRowOf(const BSplineSurface& surface, const TrimCurve& curve) {
 constexpr double alreadyCollapsed = 1e-9;
 
 double controlNetSize(const BSplineSurface& surface) {
-    Point3 low = Point3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-    for (const HomogeneousPoint3& pole : surface.poles()) {
-        low = low.cwiseMin(projectHomogeneous(pole));
-        high = high.cwiseMax(projectHomogeneous(pole));
-    }
+    const auto [low, high] = surface.controlNetBox();
     return (high - low).norm();
 }
 

@@ -4,13 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <vector>
 
 #include "tessellate/ModelOrigin.hpp"
 
@@ -29,30 +26,22 @@ namespace {
 // minute (1e4 away: 1 s).
 constexpr double kEditReach = 100;
 
-// The middle of the surface's poles' bounding box.
+// The middle of the surface's control net.
 Point3 middleOfPoles(const BSplineSurface& surface) {
-    Point3 low = Point3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-    for (const HomogeneousPoint3& pole : surface.poles()) {
-        const Point3 p = projectHomogeneous(pole);
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    }
+    const auto [low, high] = surface.controlNetBox();
     return 0.5 * (low + high);
 }
 
-// Throws std::invalid_argument where `points` reach farther than kEditReach diagonals from
+// Throws std::invalid_argument where `pole` lies farther than kEditReach diagonals from
 // `middle`.
-template <typename Points>
-void requireWithinReach(const Points& points, const Point3& middle, double diagonal, int face) {
-    const double reach = kEditReach * diagonal;
-    for (const Point3& p : points)
-        if (!((p - middle).norm() <= reach)) {
-            std::ostringstream message;
-            message << std::setprecision(3) << "face " << face + 1 << ": a pole would lie "
-                    << (p - middle).norm() << " from the face, more than " << kEditReach
-                    << " times the model's size (" << diagonal << ")";
-            throw std::invalid_argument(message.str());
-        }
+void requireWithinReach(const Point3& pole, const Point3& middle, double diagonal, int face) {
+    const double distance = (pole - middle).norm();
+    if (distance <= kEditReach * diagonal) return;
+    std::ostringstream message;
+    message << std::setprecision(3) << "face " << face + 1 << ": a pole would lie " << distance
+            << " from the face, more than " << kEditReach << " times the model's size (" << diagonal
+            << ")";
+    throw std::invalid_argument(message.str());
 }
 
 int workerThreads() {
@@ -263,11 +252,9 @@ double FaceLodCache::replaceFace(int face, const Model& replacement, int level) 
     }
     edited->vertices.insert(edited->vertices.end(), placed.vertices.begin(), placed.vertices.end());
     TrimmedSurface surface = placed.faces.front();
-    std::vector<Point3> poles;
+    const Point3 middle = middleOfPoles(model_->faces[face].surface);
     for (const HomogeneousPoint3& pole : surface.surface.poles())
-        poles.push_back(projectHomogeneous(pole));
-    requireWithinReach(poles, middleOfPoles(model_->faces[face].surface),
-                       model_->boundingBoxDiagonal, face);
+        requireWithinReach(projectHomogeneous(pole), middle, model_->boundingBoxDiagonal, face);
     surface.faceIndex = face + 1;
     for (TrimLoop& loop : surface.loops)
         for (TrimCurve& curve : loop.curves)
@@ -288,7 +275,7 @@ double FaceLodCache::movePole(int face, int i, int j, const Point3& position, in
     if (!position.allFinite())
         throw std::invalid_argument("face " + std::to_string(face + 1) +
                                     ": the pole position is not finite");
-    requireWithinReach(std::array<Point3, 1>{position - model_->origin}, middleOfPoles(surface),
+    requireWithinReach(position - model_->origin, middleOfPoles(surface),
                        model_->boundingBoxDiagonal, face);
     const auto start = Clock::now();
     auto edited = std::make_shared<Model>(*model_);
