@@ -16,7 +16,7 @@ const char* const kStageNames[] = {"import", "tessellate"};
 constexpr auto kReportInterval = std::chrono::milliseconds(100);
 }  // namespace
 
-std::function<void(std::size_t, std::size_t)> JobProgress::stage(int index) {
+std::function<void(std::size_t, std::size_t)> JobProgress::stage(Stage index) {
     return [this, index](std::size_t done, std::size_t total) {
         // one writer at a time would need a lock; a reading torn between two updates of the
         // same stage is off by a face, which a progress display does not show
@@ -55,9 +55,7 @@ void runReportingProgress(const std::function<void(JobProgress&)>& job, const py
     std::optional<py::error_already_set> reportError;
     JobProgress::Reading last;
     auto call = [&](const JobProgress::Reading& reading) {
-        if (reportError || reading.stage < 0) return;
-        if (reading.stage == last.stage && reading.done == last.done && reading.total == last.total)
-            return;
+        if (reportError || reading.stage < 0 || reading == last) return;
         try {
             report(kStageNames[reading.stage], reading.done, reading.total);
         } catch (py::error_already_set& error) {
@@ -65,9 +63,9 @@ void runReportingProgress(const std::function<void(JobProgress&)>& job, const py
         }
         last = reading;
     };
-    // a stage that ended between two reports is reported as ended
-    auto finishStage = [&](int stage) {
-        if (last.stage == stage && last.done < last.total) call({stage, last.total, last.total});
+    // the last stage reported, where it ended between two reports, is reported as ended
+    auto finishLastStage = [&] {
+        if (last.done < last.total) call({last.stage, last.total, last.total});
     };
     bool done = false;
     while (!done) {
@@ -78,14 +76,14 @@ void runReportingProgress(const std::function<void(JobProgress&)>& job, const py
         }
         const JobProgress::Reading reading = progress.read();
         if (reading.stage != last.stage) {
-            finishStage(last.stage);
+            finishLastStage();
             // a stage that began and ended between two reports (both count the model's faces)
             for (int skipped = last.stage + 1; skipped < reading.stage; ++skipped)
                 call({skipped, reading.total, reading.total});
         }
         call(reading);
     }
-    finishStage(last.stage);
+    finishLastStage();
     {
         py::gil_scoped_release release;
         worker.join();

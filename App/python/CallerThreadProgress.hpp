@@ -13,12 +13,16 @@ namespace nurbslod::python {
 // The job's threads write it; the caller's thread reads it.
 class JobProgress {
 public:
+    // the stages in the order they run; the callback names them "import" and "tessellate"
+    enum Stage : int { Import = 0, Tessellate = 1 };
+
     // a callback for the stage, as occ::importModel and TessellationOptions take one
-    std::function<void(std::size_t, std::size_t)> stage(int index);
+    std::function<void(std::size_t, std::size_t)> stage(Stage index);
 
     struct Reading {
         int stage = -1;  // -1: nothing reported yet
         std::size_t done = 0, total = 0;
+        bool operator==(const Reading&) const = default;
     };
     Reading read() const;
 

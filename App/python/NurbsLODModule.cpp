@@ -184,9 +184,9 @@ TessellationResult run(const Call& call) {
     runReportingProgress(
         [&](JobProgress& progress) {
             TessellationOptions options = call.options;
-            options.progress = progress.stage(1);
+            options.progress = progress.stage(JobProgress::Tessellate);
             result = tessellateSource(call.source, call.tolerance, options, call.sourceSeconds,
-                                      progress.stage(0));
+                                      progress.stage(JobProgress::Import));
         },
         call.progress);
     return result;
