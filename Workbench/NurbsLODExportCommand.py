@@ -9,10 +9,11 @@ import os
 
 import FreeCAD
 
+from NurbsLODPaths import PARAMETER_PATH
+
 COMMAND_NAME = "NurbsLOD_ExportCertifiedMesh"
 
 # Edit > Preferences > NurbsLOD > Export certified mesh writes these.
-PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
 DEFAULT_RELATIVE = 1e-3
 MODES = ("guaranteed", "approximate")  # the preference's combo box index
 

@@ -19,7 +19,7 @@ import math
 
 import FreeCAD
 
-PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+from NurbsLODPaths import PARAMETER_PATH
 # The least diagonal the tessellator takes (ten times OpenCASCADE's confusion distance); a
 # smaller shape gets no fallback mesh either.
 SMALLEST_MODEL = 1e-6

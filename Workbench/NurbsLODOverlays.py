@@ -42,7 +42,7 @@ import os
 
 import FreeCAD
 
-PARAMETER_GROUP = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+from NurbsLODPaths import PARAMETER_PATH as PARAMETER_GROUP
 
 KINDS = ("isophotes", "zebra", "curvature")
 CURVATURE_KINDS = {

@@ -15,6 +15,10 @@ BUILD_DIR = os.environ.get("NURBSLOD_BUILD_DIR") or os.path.join(ROOT, "build")
 # Where CMake puts the compiled Python module NurbsLOD.
 MODULE_DIR = os.path.join(BUILD_DIR, "App", "python")
 
+# The workbench's parameter group: Edit > Preferences > NurbsLOD writes it
+# (Resources/ui/NurbsLODPreferences.ui), the display, the overlays and the export read it.
+PARAMETER_PATH = "User parameter:BaseApp/Preferences/Mod/NurbsLOD"
+
 
 def icon(name):
     """Path of an icon in Resources/icons."""
