@@ -20,9 +20,6 @@ import math
 import FreeCAD
 
 from NurbsLODPaths import PARAMETER_PATH
-# The least diagonal the tessellator takes (ten times OpenCASCADE's confusion distance); a
-# smaller shape gets no fallback mesh either.
-SMALLEST_MODEL = 1e-6
 
 # The defaults of the preferences page (Resources/ui/NurbsLODPreferences.ui); a macro's
 # arguments override them.
@@ -183,7 +180,11 @@ def _fallback_node(obj, failures):
     indices = []
     shape = local_shape(obj)
     diagonal = shape.BoundBox.DiagonalLength
-    if not diagonal >= SMALLEST_MODEL:
+    import NurbsLOD
+
+    # the least diagonal the tessellator takes (ten times OpenCASCADE's confusion distance): a
+    # smaller shape gets no fallback mesh either
+    if not diagonal >= NurbsLOD.SMALLEST_MODEL:
         # OpenCASCADE's mesher ran for ever on a sphere of radius 5e-8 (FreeCAD's own display
         # refuses it): the GUI thread must not wait for it
         FreeCAD.Console.PrintWarning(

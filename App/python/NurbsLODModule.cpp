@@ -393,6 +393,11 @@ PYBIND11_MODULE(NurbsLOD, m) {
         "STEP, IGES or BREP file. Give either tolerance (absolute, model units) or relative\n"
         "(fraction of the bounding box diagonal); with neither, relative=1e-3.";
 
+    // the limits tessellate() refuses beyond, for callers that check first (the workbench's
+    // display keeps FreeCAD's own mesher to the same floor)
+    m.attr("SMALLEST_MODEL") = nurbslod::kSmallestModel;
+    m.attr("FINEST_RELATIVE_TOLERANCE") = nurbslod::kFinestRelativeTolerance;
+
     py::register_exception<nurbslod::occ::ModelReadError>(m, "ReadError", PyExc_ValueError);
     translateOpenCascadeFailures();
 

@@ -2067,13 +2067,6 @@ constexpr double kRefinedTriangles = 3;
 
 namespace {
 
-// The least bounding-box diagonal of a model tessellateModel takes: ten times OpenCASCADE's
-// confusion distance (Precision::Confusion, 1e-7), which is also its least edge and vertex
-// tolerance. Below, a vertex's tolerance ball may hold whole faces: a sphere of radius 5e-8
-// (FreeCAD's makeSphere) at relative 1e-3 ran for minutes, its boundary grown to 475,000
-// points, where one of 5.5e-8 took 17 ms.
-constexpr double kSmallestModel = 1e-6;
-
 // How many times a face left without a triangle is tried again at a quarter of the tolerance.
 constexpr int kLostFaceRounds = 3;
 

@@ -45,6 +45,14 @@ struct TessellationResult {
 // unsaved work) or run for hours (1e-20 of a sphere's size never ended) before any message.
 constexpr double kFinestRelativeTolerance = 1e-6;
 
+// The least bounding-box diagonal of a model tessellateModel takes: ten times OpenCASCADE's
+// confusion distance (Precision::Confusion, 1e-7), which is also its least edge and vertex
+// tolerance. Below, a vertex's tolerance ball may hold whole faces: a sphere of radius 5e-8
+// (FreeCAD's makeSphere) at relative 1e-3 ran for minutes, its boundary grown to 475,000
+// points, where one of 5.5e-8 took 17 ms. The workbench's display takes the same floor for
+// FreeCAD's own mesher (NurbsLOD.SMALLEST_MODEL), which loops there too.
+constexpr double kSmallestModel = 1e-6;
+
 // Tessellates every face of the model within options.tolerance, sharing edge vertices between
 // the faces of an edge. A face that cannot be tessellated is listed in failures with its
 // reason; the others are still meshed. Throws std::invalid_argument, with the reason, for a

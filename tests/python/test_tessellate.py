@@ -221,6 +221,23 @@ class ToleranceArguments(unittest.TestCase):
         with self.assertRaises(TypeError):
             NurbsLOD.tessellate(self.box, tolerance="abc")
 
+    def test_exported_limits_are_the_ones_enforced(self):
+        # a box just above the size floor is meshed, one just below is refused
+        floor = NurbsLOD.SMALLEST_MODEL
+        edge = floor / 3**0.5
+        above = Part.makeBox(1.01 * edge, 1.01 * edge, 1.01 * edge)
+        self.assertGreater(NurbsLOD.tessellate(above)["summary"]["triangles"], 0)
+        below = Part.makeBox(0.99 * edge, 0.99 * edge, 0.99 * edge)
+        with self.assertRaisesRegex(ValueError, "across"):
+            NurbsLOD.tessellate(below)
+        # the finest relative tolerance is taken, a finer one refused
+        finest = NurbsLOD.FINEST_RELATIVE_TOLERANCE
+        self.assertGreater(
+            NurbsLOD.tessellate(self.box, relative=1.01 * finest)["summary"]["triangles"], 0
+        )
+        with self.assertRaisesRegex(ValueError, "finer than"):
+            NurbsLOD.tessellate(self.box, relative=0.5 * finest)
+
     def test_bad_mode_and_threads_raise_value_error(self):
         with self.assertRaisesRegex(ValueError, "mode"):
             NurbsLOD.tessellate(self.box, tolerance=0.1, mode="exact")
