@@ -30,9 +30,12 @@ def shapes_of(objects):
 def export_settings():
     """The preferences' export tolerance (a fraction of the selection's size) and mode; the
     defaults where a value is missing or out of range."""
+    import NurbsLOD
+
     group = FreeCAD.ParamGet(PARAMETER_PATH)
     relative = group.GetFloat("ExportRelative", DEFAULT_RELATIVE)
-    if not (math.isfinite(relative) and 1e-6 <= relative <= 0.1):
+    # the finest the tessellator takes (the page's own minimum is the same)
+    if not (math.isfinite(relative) and NurbsLOD.FINEST_RELATIVE_TOLERANCE <= relative <= 0.1):
         relative = DEFAULT_RELATIVE
     index = group.GetInt("ExportMode", 0)
     return relative, MODES[index] if 0 <= index < len(MODES) else MODES[0]

@@ -42,7 +42,7 @@ import os
 
 import FreeCAD
 
-from NurbsLODPaths import PARAMETER_PATH as PARAMETER_GROUP
+from NurbsLODPaths import PARAMETER_PATH
 
 KINDS = ("isophotes", "zebra", "curvature")
 CURVATURE_KINDS = {
@@ -77,7 +77,7 @@ DEFAULTS = {
 # index (Gui::PrefComboBox).
 CURVATURE_KIND_ORDER = ("gaussian", "mean", "minimum", "maximum")
 
-# option -> (parameter name, type) in PARAMETER_GROUP; a parameter that is set wins over
+# option -> (parameter name, type) in PARAMETER_PATH; a parameter that is set wins over
 # DEFAULTS, an option given to set_overlay wins over both. The names of the preferences page
 # (Resources/ui/NurbsLODPreferences.ui) where it has the option.
 PREFERENCES = {
@@ -142,7 +142,7 @@ def options_for(kind, options):
     merged = dict(DEFAULTS["common"])
     merged.update(DEFAULTS[kind])
     try:
-        group = FreeCAD.ParamGet(PARAMETER_GROUP)
+        group = FreeCAD.ParamGet(PARAMETER_PATH)
         set_names = {
             "Float": set(group.GetFloats()),
             "Int": set(group.GetInts()),

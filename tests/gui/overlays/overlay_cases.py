@@ -214,7 +214,7 @@ def test_preferences_give_the_defaults(ctx):
 
     import NurbsLODOverlays
 
-    group = FreeCAD.ParamGet(NurbsLODOverlays.PARAMETER_GROUP)
+    group = FreeCAD.ParamGet(NurbsLODOverlays.PARAMETER_PATH)
     # as the preferences page writes them: spin boxes, a double spin box, a combo box index
     group.SetInt("ZebraStripeCount", 7)
     group.SetFloat("ZebraWidthRatio", 0.3)
