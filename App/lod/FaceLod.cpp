@@ -110,10 +110,11 @@ FaceLodResult tessellateFaceLod(const Model& model, int faceIndex, double tolera
         options.tolerance = tolerance;
         options.mode = ErrorMode::Guaranteed;  // the screen-space error is a bound, not a guess
         options.splitThroughBoundaryPoints = false;
-        options.freeEdgesTakeSurfaceShare = false;  // the face alone: its edges are not free
-        options.flatCellsByDistance = false;        // normals are measured at equal parameters
-        options.evenColumnsCutAcross = false;       // its normal bound was measured on halvings
-        options.middleSplits = false;               // and on the paper's cuts
+        options.freeEdgesTakeSurfaceShare = false;   // the face alone: its edges are not free
+        options.flatCellsByDistance = false;         // normals are measured at equal parameters
+        options.evenColumnsCutAcross = false;        // its normal bound was measured on halvings
+        options.middleSplits = false;                // and on the paper's cuts
+        options.openPointsBoundedBySurface = false;  // and on triangles near the first ones
         TessellationResult tessellation = tessellateModel(single, options);
         if (!tessellation.failures.empty()) {
             result.failure = tessellation.failures.front().reason;

@@ -346,6 +346,7 @@ py::dict analysisMeshOf(const py::object& shape, std::optional<double> tolerance
         options.flatCellsByDistance = false;
         options.evenColumnsCutAcross = false;
         options.middleSplits = false;
+        options.openPointsBoundedBySurface = false;
         result = tessellateOrRefuse(model, options);
         analysis = analysisMesh(model, result.mesh);
     }

@@ -671,6 +671,75 @@ const std::vector<Point3>& poleNet(const BezierPatch& patch) {
 
 }  // namespace
 
+namespace {
+
+// Whether the triangle and the box [s0, s1] x [t0, t1] meet (separating axes: the box's two and
+// the triangle's three).
+bool triangleMeetsBox(const std::array<Point2, 3>& triangle, double s0, double s1, double t0,
+                      double t1) {
+    const Point2 low = triangle[0].cwiseMin(triangle[1]).cwiseMin(triangle[2]);
+    const Point2 high = triangle[0].cwiseMax(triangle[1]).cwiseMax(triangle[2]);
+    if (high.x() < s0 || low.x() > s1 || high.y() < t0 || low.y() > t1) return false;
+    const std::array<Point2, 4> box{Point2(s0, t0), Point2(s1, t0), Point2(s1, t1), Point2(s0, t1)};
+    for (int k = 0; k < 3; ++k) {
+        const Point2& a = triangle[k];
+        const Point2& b = triangle[(k + 1) % 3];
+        const Point2& c = triangle[(k + 2) % 3];
+        const Point2 normal(b.y() - a.y(), a.x() - b.x());
+        const double inside = normal.dot(c - a);
+        bool allOutside = true;
+        for (const Point2& q : box)
+            if (normal.dot(q - a) * inside >= 0) allOutside = false;
+        if (allOutside) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+double affineDeviation(const BezierPatch& patch, const Point3& a00, const Point3& a10,
+                       const Point3& a01, double target, const std::array<Point2, 3>& triangle) {
+    const Point3 corner[2][2] = {{a00, a01}, {a10, a10 + a01 - a00}};
+    auto largest = [](const BezierPatch& part) {
+        double largest2 = 0;
+        for (int i = 0; i <= part.degreeU(); ++i)
+            for (int j = 0; j <= part.degreeV(); ++j)
+                largest2 = std::max(largest2, part.pole3(i, j).squaredNorm());
+        return std::sqrt(largest2);
+    };
+    // quarters of the parts over the target that meet the triangle, three times at most: a part
+    // within the target is done
+    struct Part {
+        BezierPatch difference;
+        double s0, s1, t0, t1;
+        int depth;
+    };
+    constexpr int kDeepest = 3;
+    std::vector<Part> pending{{differencePatch(patch, corner), 0, 1, 0, 1, 0}};
+    double bound = 0;
+    while (!pending.empty()) {
+        Part part = std::move(pending.back());
+        pending.pop_back();
+        if (part.depth > 0 && !triangleMeetsBox(triangle, part.s0, part.s1, part.t0, part.t1))
+            continue;
+        const double value = largest(part.difference);
+        if (value <= target || part.depth == kDeepest) {
+            bound = std::max(bound, value);
+            continue;
+        }
+        const auto quarters = part.difference.quarters();
+        const double sm = 0.5 * (part.s0 + part.s1), tm = 0.5 * (part.t0 + part.t1);
+        const std::array<std::array<double, 4>, 4> boxes{{{part.s0, sm, part.t0, tm},
+                                                          {part.s0, sm, tm, part.t1},
+                                                          {sm, part.s1, part.t0, tm},
+                                                          {sm, part.s1, tm, part.t1}}};
+        for (int q = 0; q < 4; ++q)
+            pending.push_back(
+                {quarters[q], boxes[q][0], boxes[q][1], boxes[q][2], boxes[q][3], part.depth + 1});
+    }
+    return bound;
+}
+
 int preferredSplitDirection(const BezierPatch& patch) {
     const int m = patch.degreeU(), n = patch.degreeV();
     const std::vector<Point3>& net = poleNet(patch);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -132,6 +133,18 @@ struct CellErrorBound {
 CellErrorBound cellErrorBound(const BezierPatch& patch, ErrorMode mode, double target = 0,
                               bool trimmedCell = false, bool byDistance = true,
                               double pieceFraction = 1);
+
+// A bound on how far the patch S is from the affine map A(s, t) = a00 + s (a10 - a00) +
+// t (a01 - a00) over [0, 1]^2: the largest |control point| of E = S - A (differencePatch, A being
+// a bilinear map without twist), which holds E's range (positive weights); a part above `target`
+// is cut in quarters and bounded again, three times at most. A triangle whose corners X_k lie over
+// parameters q_k of the patch, with A the affine map through the (q_k, X_k), has the point A(q)
+// over each q of its (u, v) triangle, so it is within that bound of the surface both ways: no
+// spread and no twist term, which a kd-tree cell needs for triangles it does not know yet.
+// Only the parts that meet `triangle` (in the patch's own [0, 1]^2) count where it is cut: the
+// affine map leaves the surface fastest beyond the triangle.
+double affineDeviation(const BezierPatch& patch, const Point3& a00, const Point3& a10,
+                       const Point3& a01, double target, const std::array<Point2, 3>& triangle);
 
 // The bilinear patch of the corners c00, c10, c01, c11 at (s, t): B of the bounds below.
 inline Point3 bilinearAt(const Point3& c00, const Point3& c10, const Point3& c01, const Point3& c11,

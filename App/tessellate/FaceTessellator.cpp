@@ -705,6 +705,83 @@ struct FaceTessellator::CellDecisions {
     std::unordered_map<std::array<cInt, 4>, Decision, RectHash> byRect;
 };
 
+double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
+                                      const std::array<Point3, 3>& position, double target) const {
+    constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+    // only corners on the surface's domain: beyond it no piece holds the surface
+    const auto& domainU = patches_->breakpointsU();
+    const auto& domainV = patches_->breakpointsV();
+    for (const Point2& q : uv)
+        if (!(q.x() >= domainU.front() && q.x() <= domainU.back() && q.y() >= domainV.front() &&
+              q.y() <= domainV.back()))
+            return kUnbounded;
+    // the affine map through the corners: position = X0 + G (q - q0)
+    Eigen::Matrix2d across;
+    across << uv[1].x() - uv[0].x(), uv[2].x() - uv[0].x(), uv[1].y() - uv[0].y(),
+        uv[2].y() - uv[0].y();
+    const double determinant = across.determinant();
+    const double scale = across.cwiseAbs().maxCoeff();
+    if (!(std::abs(determinant) > 1e-12 * scale * scale)) return kUnbounded;
+    Eigen::Matrix<double, 3, 2> differences;
+    differences << position[1] - position[0], position[2] - position[0];
+    const Eigen::Matrix<double, 3, 2> gradient = differences * across.inverse();
+    auto affineAt = [&](const Point2& q) -> Point3 { return position[0] + gradient * (q - uv[0]); };
+    // The surface's distance from the triangle at its centre and at its sides' middles is a
+    // lower bound of any bound: where it is over the target already, no piece is bounded (most
+    // triangles that removeOpenBoundaryPoints tries on a strip of thin cells are far over it).
+    double seen = 0;
+    for (const auto& [wa, wb, wc] :
+         {std::array{1.0 / 3, 1.0 / 3, 1.0 / 3}, std::array{0.5, 0.5, 0.0},
+          std::array{0.0, 0.5, 0.5}, std::array{0.5, 0.0, 0.5}}) {
+        const Point2 q = wa * uv[0] + wb * uv[1] + wc * uv[2];
+        const int su = patches_->spanIndexU(q.x()), sv = patches_->spanIndexV(q.y());
+        const auto& breaksU = patches_->breakpointsU();
+        const auto& breaksV = patches_->breakpointsV();
+        const Point3 onSurface =
+            patches_->patch(su, sv).point((q.x() - breaksU[su]) / (breaksU[su + 1] - breaksU[su]),
+                                          (q.y() - breaksV[sv]) / (breaksV[sv + 1] - breaksV[sv]));
+        seen = std::max(seen, (onSurface - affineAt(q)).norm());
+    }
+    if (!(seen <= target)) return seen;
+    // the box of the corners, a step beyond each side (the frame's rounding), cut at span borders
+    const Point2 low = uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);
+    const Point2 high = uv[0].cwiseMax(uv[1]).cwiseMax(uv[2]);
+    const IntPoint a = frame_->toInteger(low), b = frame_->toInteger(high);
+    std::vector<cInt> xs{a.X - 1}, ys{a.Y - 1};
+    for (cInt x : frame_->breaksX)
+        if (x > a.X - 1 && x < b.X + 1) xs.push_back(x);
+    for (cInt y : frame_->breaksY)
+        if (y > a.Y - 1 && y < b.Y + 1) ys.push_back(y);
+    xs.push_back(b.X + 1);
+    ys.push_back(b.Y + 1);
+    if ((xs.size() - 1) * (ys.size() - 1) > kMostSpansInCell) return kUnbounded;
+    double bound = 0;
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+        for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
+            Point2 from = frame_->toParameter(xs[i], ys[j]);
+            Point2 to = frame_->toParameter(xs[i + 1], ys[j + 1]);
+            const Point2 middle = 0.5 * (from + to);
+            const int su = patches_->spanIndexU(middle.x()), sv = patches_->spanIndexV(middle.y());
+            // within the span (the step beyond may pass the surface's domain), so that the
+            // piece maps [from, to] linearly and the corners' local parameters hold
+            const auto& breaksU = patches_->breakpointsU();
+            const auto& breaksV = patches_->breakpointsV();
+            from = from.cwiseMax(Point2(breaksU[su], breaksV[sv]));
+            to = to.cwiseMin(Point2(breaksU[su + 1], breaksV[sv + 1]));
+            if (!(from.x() < to.x() && from.y() < to.y())) continue;
+            const BezierPatch piece = patches_->piece(su, sv, from.x(), to.x(), from.y(), to.y());
+            std::array<Point2, 3> local;
+            for (int k = 0; k < 3; ++k)
+                local[k] = Point2((uv[k].x() - from.x()) / (to.x() - from.x()),
+                                  (uv[k].y() - from.y()) / (to.y() - from.y()));
+            bound =
+                std::max(bound, affineDeviation(piece, affineAt(from), affineAt({to.x(), from.y()}),
+                                                affineAt({from.x(), to.y()}), target, local));
+            if (!(bound <= target)) return bound;
+        }
+    return bound;
+}
+
 double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
                                          const std::vector<cInt>& breaksX,
                                          const std::vector<cInt>& breaksY, double target,
@@ -1707,8 +1784,19 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         mesh.vertices[i].normal = face_.reversed ? Vector3(-normals[i]) : normals[i];
         mesh.vertices[i].uv = uvOfVertex[i];
     }
-    removeOpenBoundaryPoints(mesh, sharedOffsets, triangleSlack,
-                             0.5 * budget_.shareGap + budget_.openChords);
+    const double allowance = 0.5 * budget_.shareGap + budget_.openChords;
+    // where the new triangles change the old ones more than the allowance, bounded against the
+    // surface: within the surface share and the allowance, as a trimmed cell's triangles
+    TriangleBound boundedBySurface;
+    if (mode_ == ErrorMode::Guaranteed && choices_.openPointsBoundedBySurface)
+        boundedBySurface = [&](const std::array<std::uint32_t, 3>& t) {
+            const auto& v = mesh.vertices;
+            return triangleBound({v[t[0]].uv, v[t[1]].uv, v[t[2]].uv},
+                                 {v[t[0]].position, v[t[1]].position, v[t[2]].position},
+                                 budget_.surface + allowance);
+        };
+    removeOpenBoundaryPoints(mesh, sharedOffsets, triangleSlack, allowance, boundedBySurface,
+                             budget_.surface);
     splitNeedles(mesh.triangles,
                  [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; });
     if (face_.reversed)

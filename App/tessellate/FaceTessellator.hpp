@@ -31,6 +31,7 @@ struct CellChoices {
     bool flatCellsByDistance = true;
     bool middleSplits = true;
     bool openPointsSpendCellSlack = true;
+    bool openPointsBoundedBySurface = true;
     // The face's free edges (model edge indices, sorted; guaranteed mode, and only where one of
     // the two choices below asks for their chords). A cell whose cut would leave a point on one
     // of their chords is cut the other way where that lowers its bound enough
@@ -111,6 +112,12 @@ private:
     // cuts it at its span borders where the bound is above `target`. Infinite where a quick test
     // already finds it above, or where the cell holds more than kMostSpansInCell spans.
     static constexpr std::size_t kMostSpansInCell = 1024;
+    // How far a triangle with these corners (parameters, positions) may be from the surface,
+    // both ways (affineDeviation over the spans' pieces of its (u, v) box, its corners on the
+    // surface's domain; removeOpenBoundaryPoints). A value above `target` only tells that the
+    // triangle is not within it: the search stops at the first surface point or piece beyond.
+    double triangleBound(const std::array<Point2, 3>& uv, const std::array<Point3, 3>& position,
+                         double target) const;
     double boundAcrossSpans(const std::array<ClipperLib::cInt, 4>& cell,
                             const std::vector<ClipperLib::cInt>& breaksX,
                             const std::vector<ClipperLib::cInt>& breaksY, double target,

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -437,6 +438,91 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
 // The search keeps n x n tables of the ring: a larger ring keeps its points (wing.brep's
 // largest at relative 1e-4 is 251).
 constexpr std::size_t kLargestRing = 1024;
+// The rings bounded against the surface (leastBoundTriangulation, which bounds each of its
+// O(n^3) triangles): those of one or two points on a chord have 4 to 6.
+constexpr std::size_t kLargestBoundedRing = 6;
+// A face's rings are bounded so while no more than kBoundedTries and kBoundedTriesPerTaken for
+// each one taken have failed: on a strip of cells far thinner than the chords they cut (the
+// generated ruled face between a circle and an ellipse at relative 1e-4: 190 of 20,830 taken)
+// the bounds would cost more than the rest of the face.
+constexpr std::size_t kBoundedTries = 16, kBoundedTriesPerTaken = 8;
+
+// The triangulation of the ring n0 .. nm (closed by the chord nm -> n0) whose largest
+// triangle bound (`bound`) is least, with that bound: the polygon recurrence over the ring in
+// (u, v). A triangle is taken where it turns counter-clockwise in (u, v) with area and holds no
+// other ring point, its new sides are not edges outside the disk (`forbidden`) and cross no side
+// of the ring, and it faces the surface's normals at its corners the way the old triangles do
+// (`facing`: +1 or -1), so that it folds nowhere in space. A triangle over `limit` is not taken.
+// None where no triangulation is within it.
+std::optional<std::pair<std::vector<Triangle>, double>> leastBoundTriangulation(
+    const std::vector<std::uint32_t>& ring, const FaceMesh& mesh,
+    const std::vector<char>& forbidden, double facing, const TriangleBound& bound, double limit) {
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    const std::size_t size = ring.size(), m = size - 1;
+    auto uv = [&](std::size_t i) -> const Point2& { return mesh.vertices[ring[i]].uv; };
+    double extent = 0;
+    for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = 0; j < size; ++j)
+            extent = std::max(extent, (uv(i) - uv(j)).squaredNorm());
+    const double minimumArea = 1e-14 * extent;
+    // sides are edges already; a diagonal must cross no side (the chord included)
+    auto edgeUsable = [&](std::size_t i, std::size_t j) {
+        if (j == i + 1 || (i == 0 && j == m)) return true;
+        if (forbidden[i * size + j]) return false;
+        for (std::size_t k = 0; k < size; ++k)
+            if (segmentsCross(uv(i), uv(j), uv(k), uv((k + 1) % size))) return false;
+        return true;
+    };
+    auto triangleCost = [&](std::size_t i, std::size_t k, std::size_t j) {
+        if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return kNever;
+        for (std::size_t w = 0; w < size; ++w) {
+            if (w == i || w == k || w == j) continue;
+            if (cross(uv(i), uv(k), uv(w)) >= -minimumArea &&
+                cross(uv(k), uv(j), uv(w)) >= -minimumArea &&
+                cross(uv(j), uv(i), uv(w)) >= -minimumArea)
+                return kNever;
+        }
+        const auto& a = mesh.vertices[ring[i]];
+        const auto& b = mesh.vertices[ring[k]];
+        const auto& c = mesh.vertices[ring[j]];
+        const Vector3 n = (b.position - a.position).cross(c.position - a.position);
+        if (!(facing * n.dot(a.normal + b.normal + c.normal) > 1e-6 * n.norm())) return kNever;
+        const double value = bound({ring[i], ring[k], ring[j]});
+        return value <= limit ? value : kNever;
+    };
+    std::vector<double> cost(size * size, 0.0);
+    std::vector<std::size_t> split(size * size, 0);
+    std::vector<char> usable(size * size, 0);
+    for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = i + 1; j < size; ++j) usable[i * size + j] = edgeUsable(i, j);
+    for (std::size_t length = 2; length <= m; ++length)
+        for (std::size_t i = 0; i + length <= m; ++i) {
+            const std::size_t j = i + length;
+            double best = kNever;
+            if (usable[i * size + j])
+                for (std::size_t k = i + 1; k < j; ++k) {
+                    if (!usable[i * size + k] || !usable[k * size + j]) continue;
+                    const double below = std::max(cost[i * size + k], cost[k * size + j]);
+                    if (!(below < best)) continue;
+                    const double c = std::max(below, triangleCost(i, k, j));
+                    if (c < best) best = c, split[i * size + j] = k;
+                }
+            cost[i * size + j] = best;
+        }
+    if (cost[m] == kNever) return std::nullopt;
+    std::vector<Triangle> triangles;
+    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, m}};
+    while (!pending.empty()) {
+        const auto [i, j] = pending.back();
+        pending.pop_back();
+        if (j < i + 2) continue;
+        const std::size_t k = split[i * size + j];
+        triangles.push_back({ring[i], ring[k], ring[j]});
+        pending.push_back({i, k});
+        pending.push_back({k, j});
+    }
+    return std::make_pair(std::move(triangles), cost[m]);
+}
 
 // v lies on the chord from `last` to `first` in space, strictly between them.
 bool onChord(const FaceMesh& mesh, std::uint32_t v, std::uint32_t last, std::uint32_t first) {
@@ -499,7 +585,8 @@ std::optional<std::pair<std::vector<std::uint32_t>, std::vector<std::size_t>>> d
 }  // namespace
 
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
-                                     const std::vector<double>& slack, double allowance) {
+                                     const std::vector<double>& slack, double allowance,
+                                     const TriangleBound& triangleBound, double surfaceShare) {
     const std::size_t vertexCount = mesh.vertices.size();
     std::vector<std::vector<std::size_t>> trianglesOf(vertexCount);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
@@ -513,6 +600,7 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
     for (std::size_t t = 0; t < changed.size() && t < slack.size(); ++t)
         changed[t] = -std::max(0.0, slack[t]);
     std::vector<char> dropped(vertexCount, 0), chordTried(vertexCount, 0);
+    std::size_t boundedTried = 0, boundedTaken = 0;
     std::size_t count = 0;
 
     // the ring about v where v is the face's own point, its triangles one fan, and it lies on
@@ -572,21 +660,51 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
                 ringOffset = std::max(ringOffset, sharedOffsets[mesh.vertices[i].sharedId]);
         double before = -std::numeric_limits<double>::infinity();
         for (std::size_t t : inside) before = std::max(before, changed[t]);
+        // the new triangles and how far each may be from the surface beyond the surface share
+        // (what `changed` holds)
+        std::optional<std::vector<Triangle>> chosen;
+        double newChange = 0;
         const double limit = allowance - before - ringOffset;
-        if (!(limit >= 0)) return false;
-        const auto best = leastChangingTriangulation(points, ring, old, mesh, forbidden, limit);
-        if (!best) return false;
-        if (before + best->second + ringOffset > allowance) return false;
+        if (limit >= 0)
+            if (auto best = leastChangingTriangulation(points, ring, old, mesh, forbidden, limit);
+                best && before + best->second + ringOffset <= allowance) {
+                chosen = std::move(best->first);
+                newChange = before + best->second;
+            }
+        if (!chosen && triangleBound && size <= kLargestBoundedRing &&
+            boundedTried < kBoundedTries + kBoundedTriesPerTaken * boundedTaken) {
+            ++boundedTried;
+            // bounded against the surface instead (their corners' offsets included), turned
+            // against the surface's normals as the old triangles are
+            double facing = 0;
+            for (const Triangle& t : old) {
+                const auto& a = mesh.vertices[t[0]];
+                const auto& b = mesh.vertices[t[1]];
+                const auto& c = mesh.vertices[t[2]];
+                facing += (b.position - a.position)
+                              .cross(c.position - a.position)
+                              .dot(a.normal + b.normal + c.normal);
+            }
+            const auto bounded =
+                leastBoundTriangulation(ring, mesh, forbidden, facing >= 0 ? 1.0 : -1.0,
+                                        triangleBound, surfaceShare + allowance);
+            if (bounded) {
+                chosen = std::move(bounded->first);
+                newChange = bounded->second - surfaceShare;
+                ++boundedTaken;
+            }
+        }
+        if (!chosen) return false;
         for (std::size_t t : inside) removed[t] = 1;
         for (std::uint32_t p : points) {
             dropped[p] = 1;
             trianglesOf[p].clear();
         }
-        for (const Triangle& triangle : best->first) {
+        for (const Triangle& triangle : *chosen) {
             const std::size_t index = mesh.triangles.size();
             mesh.triangles.push_back(triangle);
             removed.push_back(0);
-            changed.push_back(before + best->second);
+            changed.push_back(newChange);
             for (std::uint32_t i : triangle) trianglesOf[i].push_back(index);
         }
         count += points.size();

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tessellate/FaceMesh.hpp"
@@ -20,7 +23,15 @@ namespace nurbslod {
 // re-triangulation of triangles an earlier one made counts that one's change too. Works in
 // (u, v) counter-clockwise order, before any reversal of the face. Returns how many points were
 // removed.
+//
+// Where the new triangles change the first ones by more than that, they may still be bounded
+// against the surface itself: `triangleBound`, where given, bounds how far a triangle of the
+// face's vertices (by index) is from the surface, both ways, and a re-triangulation whose every
+// triangle is within `surfaceShare` plus the allowance that way is taken too.
+using TriangleBound = std::function<double(const std::array<std::uint32_t, 3>& triangle)>;
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
-                                     const std::vector<double>& slack, double allowance);
+                                     const std::vector<double>& slack, double allowance,
+                                     const TriangleBound& triangleBound = nullptr,
+                                     double surfaceShare = 0);
 
 }  // namespace nurbslod
