@@ -128,6 +128,41 @@ struct ReleaseTablesAfter {
     ~ReleaseTablesAfter() { tables.releaseAfter(size); }
 };
 
+// Whether the triangle (i, k, j) of a ring, uv(n) its points in (u, v), turns counter-clockwise
+// with more than `minimumArea` and holds no other point of the ring (n < size), in or on it.
+template <class Uv>
+bool emptyRingTriangle(const Uv& uv, std::size_t size, std::size_t i, std::size_t k, std::size_t j,
+                       double minimumArea) {
+    if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return false;
+    for (std::size_t w = 0; w < size; ++w) {
+        if (w == i || w == k || w == j) continue;
+        if (cross(uv(i), uv(k), uv(w)) >= -minimumArea &&
+            cross(uv(k), uv(j), uv(w)) >= -minimumArea &&
+            cross(uv(j), uv(i), uv(w)) >= -minimumArea)
+            return false;
+    }
+    return true;
+}
+
+// The triangles of a polygon recurrence over the ring n0 .. nm: split[i * ring.size() + j] is
+// the apex over the side (i, j) of the best triangulation of the sub-polygon i .. j.
+std::vector<Triangle> trianglesOfSplits(const std::vector<std::uint32_t>& ring,
+                                        const std::vector<std::size_t>& split) {
+    const std::size_t size = ring.size();
+    std::vector<Triangle> triangles;
+    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, size - 1}};
+    while (!pending.empty()) {
+        const auto [i, j] = pending.back();
+        pending.pop_back();
+        if (j < i + 2) continue;
+        const std::size_t k = split[i * size + j];
+        triangles.push_back({ring[i], ring[k], ring[j]});
+        pending.push_back({i, k});
+        pending.push_back({k, j});
+    }
+    return triangles;
+}
+
 // The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that the points to drop
 // lie on) that least changes the surface, and that change. `old` are the triangles about those
 // points (their union is a disk whose boundary is the ring and the chord). Both the old
@@ -384,15 +419,8 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
         diagonal[i * size + i + 1] = diagonal[(i + 1) * size + i] = 0.0;
     diagonal[m] = diagonal[m * size] = 0.0;
     auto triangleValid = [&](std::size_t i, std::size_t k, std::size_t j) {
-        if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return false;
-        for (std::size_t w = 0; w < size; ++w) {
-            if (w == i || w == k || w == j) continue;
-            if (cross(uv(i), uv(k), uv(w)) >= -minimumArea &&
-                cross(uv(k), uv(j), uv(w)) >= -minimumArea &&
-                cross(uv(j), uv(i), uv(w)) >= -minimumArea)
-                return false;
-        }
-        return facesNormal(ring[i], ring[k], ring[j]);
+        return emptyRingTriangle(uv, size, i, k, j, minimumArea) &&
+               facesNormal(ring[i], ring[k], ring[j]);
     };
     // cost (i, j): the least largest difference over triangulations of the sub-polygon i .. j,
     // kept in both halves (cost (j, i) too) so that the search reads rows only
@@ -421,18 +449,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastChangingTriangulati
             cost[i * size + j] = cost[j * size + i] = best;
         }
     if (cost[m] == kNever) return std::nullopt;
-    std::vector<Triangle> triangles;
-    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, m}};
-    while (!pending.empty()) {
-        const auto [i, j] = pending.back();
-        pending.pop_back();
-        if (j < i + 2) continue;
-        const std::size_t k = split[i * size + j];
-        triangles.push_back({ring[i], ring[k], ring[j]});
-        pending.push_back({i, k});
-        pending.push_back({k, j});
-    }
-    return std::make_pair(std::move(triangles), std::max(cost[m], ontoChord));
+    return std::make_pair(trianglesOfSplits(ring, split), std::max(cost[m], ontoChord));
 }
 
 // The search keeps n x n tables of the ring: a larger ring keeps its points (wing.brep's
@@ -474,14 +491,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastBoundTriangulation(
         return true;
     };
     auto triangleCost = [&](std::size_t i, std::size_t k, std::size_t j) {
-        if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return kNever;
-        for (std::size_t w = 0; w < size; ++w) {
-            if (w == i || w == k || w == j) continue;
-            if (cross(uv(i), uv(k), uv(w)) >= -minimumArea &&
-                cross(uv(k), uv(j), uv(w)) >= -minimumArea &&
-                cross(uv(j), uv(i), uv(w)) >= -minimumArea)
-                return kNever;
-        }
+        if (!emptyRingTriangle(uv, size, i, k, j, minimumArea)) return kNever;
         const auto& a = mesh.vertices[ring[i]];
         const auto& b = mesh.vertices[ring[k]];
         const auto& c = mesh.vertices[ring[j]];
@@ -510,18 +520,7 @@ std::optional<std::pair<std::vector<Triangle>, double>> leastBoundTriangulation(
             cost[i * size + j] = best;
         }
     if (cost[m] == kNever) return std::nullopt;
-    std::vector<Triangle> triangles;
-    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, m}};
-    while (!pending.empty()) {
-        const auto [i, j] = pending.back();
-        pending.pop_back();
-        if (j < i + 2) continue;
-        const std::size_t k = split[i * size + j];
-        triangles.push_back({ring[i], ring[k], ring[j]});
-        pending.push_back({i, k});
-        pending.push_back({k, j});
-    }
-    return std::make_pair(std::move(triangles), cost[m]);
+    return std::make_pair(trianglesOfSplits(ring, split), cost[m]);
 }
 
 // v lies on the chord from `last` to `first` in space, strictly between them.
