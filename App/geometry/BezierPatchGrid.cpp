@@ -87,6 +87,12 @@ BezierPatch BezierPatchGrid::piece(int spanU, int spanV, double u0, double u1, d
         .restricted(local(u0, a0, a1), local(u1, a0, a1), local(v0, b0, b1), local(v1, b0, b1));
 }
 
+Point3 BezierPatchGrid::point(double u, double v) const {
+    const int su = spanIndexU(u), sv = spanIndexV(v);
+    return patch(su, sv).point((u - breaksU_[su]) / (breaksU_[su + 1] - breaksU_[su]),
+                               (v - breaksV_[sv]) / (breaksV_[sv + 1] - breaksV_[sv]));
+}
+
 int BezierPatchGrid::spanIndexU(double u) const {
     return spanIndex(breaksU_, u);
 }

@@ -25,6 +25,10 @@ public:
     // parameters, clamped to the span).
     BezierPatch piece(int spanU, int spanV, double u0, double u1, double v0, double v1) const;
 
+    // The surface's point at (u, v), from the patch of the span that holds it (clamped to the
+    // domain, as spanIndexU/V clamp).
+    Point3 point(double u, double v) const;
+
     // The span index containing t (clamped to the domain).
     int spanIndexU(double u) const;
     int spanIndexV(double v) const;

@@ -708,7 +708,8 @@ struct FaceTessellator::CellDecisions {
 double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
                                       const std::array<Point3, 3>& position, double target) const {
     constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-    // only corners on the surface's domain: beyond it no piece holds the surface
+    // only corners on the surface's domain: beyond it no piece holds the surface (its spans'
+    // borders, first to last)
     const auto& domainU = patches_->breakpointsU();
     const auto& domainV = patches_->breakpointsV();
     for (const Point2& q : uv)
@@ -734,13 +735,7 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
          {std::array{1.0 / 3, 1.0 / 3, 1.0 / 3}, std::array{0.5, 0.5, 0.0},
           std::array{0.0, 0.5, 0.5}, std::array{0.5, 0.0, 0.5}}) {
         const Point2 q = wa * uv[0] + wb * uv[1] + wc * uv[2];
-        const int su = patches_->spanIndexU(q.x()), sv = patches_->spanIndexV(q.y());
-        const auto& breaksU = patches_->breakpointsU();
-        const auto& breaksV = patches_->breakpointsV();
-        const Point3 onSurface =
-            patches_->patch(su, sv).point((q.x() - breaksU[su]) / (breaksU[su + 1] - breaksU[su]),
-                                          (q.y() - breaksV[sv]) / (breaksV[sv + 1] - breaksV[sv]));
-        seen = std::max(seen, (onSurface - affineAt(q)).norm());
+        seen = std::max(seen, (patches_->point(q.x(), q.y()) - affineAt(q)).norm());
     }
     if (!(seen <= target)) return seen;
     // the box of the corners, a step beyond each side (the frame's rounding), cut at span borders
@@ -764,10 +759,8 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
             const int su = patches_->spanIndexU(middle.x()), sv = patches_->spanIndexV(middle.y());
             // within the span (the step beyond may pass the surface's domain), so that the
             // piece maps [from, to] linearly and the corners' local parameters hold
-            const auto& breaksU = patches_->breakpointsU();
-            const auto& breaksV = patches_->breakpointsV();
-            from = from.cwiseMax(Point2(breaksU[su], breaksV[sv]));
-            to = to.cwiseMin(Point2(breaksU[su + 1], breaksV[sv + 1]));
+            from = from.cwiseMax(Point2(domainU[su], domainV[sv]));
+            to = to.cwiseMin(Point2(domainU[su + 1], domainV[sv + 1]));
             if (!(from.x() < to.x() && from.y() < to.y())) continue;
             const BezierPatch piece = patches_->piece(su, sv, from.x(), to.x(), from.y(), to.y());
             std::array<Point2, 3> local;
@@ -801,12 +794,7 @@ double FaceTessellator::boundAcrossSpans(const std::array<cInt, 4>& cell,
     // at the span corners inside the cell and at the middle of each span's piece.
     auto surfaceAt = [&](cInt x, cInt y) {
         const Point2 uv = frame_->toParameter(x, y);
-        const int su = patches_->spanIndexU(uv.x()), sv = patches_->spanIndexV(uv.y());
-        const auto& breaksU = patches_->breakpointsU();
-        const auto& breaksV = patches_->breakpointsV();
-        return patches_->patch(su, sv).point(
-            (uv.x() - breaksU[su]) / (breaksU[su + 1] - breaksU[su]),
-            (uv.y() - breaksV[sv]) / (breaksV[sv + 1] - breaksV[sv]));
+        return patches_->point(uv.x(), uv.y());
     };
     const Point3 c00 = surfaceAt(r.x0, r.y0), c10 = surfaceAt(r.x1, r.y0);
     const Point3 c01 = surfaceAt(r.x0, r.y1), c11 = surfaceAt(r.x1, r.y1);
