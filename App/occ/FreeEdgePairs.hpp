@@ -21,10 +21,19 @@ struct FreeEdgePair {
 };
 
 // The pairs of free edges whose ends coincide within `tolerance` (either way round) and whose
-// points between the ends lie within `tolerance` of each other's curve; empty unless every free
-// edge of the shape has its pair. Loose faces written edge for edge pair up whole; anything
-// else (an edge met by two shorter ones, a seam written as two edges of one face, an open
-// shell) is left to OpenCASCADE's sewing (sewFaces), which can cut edges.
+// points between the ends lie within `tolerance` of each other's curve, and the faces of the
+// free edges left without a pair. Loose faces written edge for edge pair up whole; anything else
+// (an edge met by two shorter ones, a seam written as two edges of one face, an open shell,
+// copies farther apart than the tolerance) is left to OpenCASCADE's sewing (sewFaces), which
+// can cut edges.
+struct FreeEdgeMatch {
+    std::vector<FreeEdgePair> pairs;
+    // 1-based (TopExp::MapShapes), ascending, each once; every face with a free edge where the
+    // edges cannot be compared (no curve, a tolerance that is not a positive number)
+    std::vector<int> facesLeft;
+};
+FreeEdgeMatch matchFreeEdges(const TopoDS_Shape& shape, double tolerance);
+// The pairs where every free edge has its pair, else none.
 std::vector<FreeEdgePair> pairFreeEdges(const TopoDS_Shape& shape, double tolerance);
 
 // Makes each pair (kept, joined) of the model's edges one edge: the joined edge's face takes a

@@ -552,13 +552,23 @@ Model importModel(const TopoDS_Shape& shape, int threads,
 
     // Loose faces (no shared edges in the file) are sewn where their edges coincide to far
     // below any tolerance a user asks for, so that the mesh closes across them.
-    // Faces written edge for edge pair up whole (pairFreeEdges): each pair is joined after the
+    // Free edges written edge for edge pair up (matchFreeEdges): each pair is joined after the
     // import (joinFreeEdgePairs), which costs a projection per pair. OpenCASCADE's sewing merges
     // the same edges with BRepLib::SameParameter, which took 52% of hammer.iges's whole run
-    // (1.0 of 1.9 G instructions); it is left for what pairs do not cover.
+    // (1.0 of 1.9 G instructions); it is left for the faces of the edges without a pair, sewn
+    // among themselves. A pair the sewing merged, or one of whose edges it cut, is not joined.
     const double sewingTolerance = kSewingTolerance * model.boundingBoxDiagonal;
-    const std::vector<FreeEdgePair> pairs = pairFreeEdges(original, sewingTolerance);
-    const SewnShape sewn = pairs.empty() ? sewFaces(original, sewingTolerance) : unsewn(original);
+    const FreeEdgeMatch match = matchFreeEdges(original, sewingTolerance);
+    const SewnShape sewn = match.facesLeft.empty()
+                               ? unsewn(original)
+                               : sewFaces(original, match.facesLeft, sewingTolerance);
+    std::vector<FreeEdgePair> pairs;
+    for (const FreeEdgePair& pair : match.pairs) {
+        const TopoDS_Shape kept = sewn.edgeOf(pair.kept), joined = sewn.edgeOf(pair.joined);
+        if (!kept.IsNull() && !joined.IsNull() && kept.ShapeType() == TopAbs_EDGE &&
+            joined.ShapeType() == TopAbs_EDGE && !kept.IsSame(joined))
+            pairs.push_back({TopoDS::Edge(kept), TopoDS::Edge(joined)});
+    }
 
     // No face goes through BRepBuilderAPI_NurbsConvert unless it must. It would copy every
     // face and approximate each pcurve again on the converted surface

@@ -10,6 +10,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
 #include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -48,6 +49,29 @@ TopoDS_Compound looseBox(int skip = -1) {
     return compound;
 }
 
+// The loose box whose top face (z = 30) has its front edge (y = 0) in two pieces, split at
+// x = 5: the front face's copy of that edge has no pair, nor have the top's two pieces.
+TopoDS_Compound looseBoxWithASplitEdge() {
+    const TopoDS_Compound whole = looseBox();
+    TopoDS_Compound compound;
+    BRep_Builder builder;
+    builder.MakeCompound(compound);
+    int f = 0;
+    for (TopExp_Explorer it(whole, TopAbs_FACE); it.More(); it.Next(), ++f) {
+        if (f != 1) {
+            builder.Add(compound, it.Current());
+            continue;
+        }
+        BRepBuilderAPI_MakePolygon top;
+        for (const gp_Pnt& p : {gp_Pnt(0, 0, 30), gp_Pnt(5, 0, 30), gp_Pnt(10, 0, 30),
+                                gp_Pnt(10, 20, 30), gp_Pnt(0, 20, 30)})
+            top.Add(p);
+        top.Close();
+        builder.Add(compound, BRepBuilderAPI_MakeFace(top.Wire(), Standard_True).Face());
+    }
+    return compound;
+}
+
 // How many loop curves use each edge (seams and poles left out).
 std::map<int, int> edgeUses(const Model& model) {
     std::map<int, int> uses;
@@ -79,6 +103,25 @@ TEST(FreeEdgePairs, LooseFacesOfABoxPairUpWhole) {
     EXPECT_TRUE(occ::pairFreeEdges(looseBox(1), 1e-6).empty());
     EXPECT_TRUE(occ::pairFreeEdges(box, 0).empty());
     EXPECT_TRUE(occ::pairFreeEdges(box, std::nan("")).empty());
+}
+
+// Where some free edges have no pair, only the faces near them are left to the sewing: the
+// top and front faces of the split edge, and the sides, whose edges end where it ends. The
+// bottom and back pair up whole. Imported, the pairs are joined and those faces sewn, and the
+// mesh is closed.
+TEST(FreeEdgePairs, OnlyTheFacesNearAnEdgeWithoutAPairAreLeftToTheSewing) {
+    const TopoDS_Compound box = looseBoxWithASplitEdge();
+    EXPECT_EQ(occ::freeEdges(box).size(), 25u);
+    EXPECT_TRUE(occ::pairFreeEdges(box, 1e-6).empty());
+    const occ::FreeEdgeMatch match = occ::matchFreeEdges(box, 1e-6);
+    EXPECT_EQ(match.pairs.size(), 11u);
+    EXPECT_EQ(match.facesLeft, (std::vector<int>{2, 3, 5, 6}));
+    // a tolerance that is no number compares nothing: every face with a free edge is left
+    EXPECT_EQ(occ::matchFreeEdges(box, std::nan("")).facesLeft.size(), 6u);
+    const Model model = occ::importModel(box);
+    for (const auto& face : model.faces) ASSERT_TRUE(face.error.empty()) << face.error;
+    for (const auto& [edge, count] : edgeUses(model)) EXPECT_EQ(count, 2) << "edge " << edge;
+    EXPECT_GT(closedMeshTriangles(box, model, 0.01), 0u);
 }
 
 // The copies become one edge on import: every edge of the model is used by two faces (the
