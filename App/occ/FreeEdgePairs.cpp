@@ -163,23 +163,45 @@ FreeEdgeMatch matchFreeEdges(const TopoDS_Shape& shape, double tolerance) {
     // one of which has a copy too): the faces of every free edge near one without a pair are
     // left to the sewing with it. Near: their boxes, each grown by its edge's and vertices'
     // tolerances (the sewing's reach), meet.
-    std::vector<Bnd_Box> boxes(edges.size());
-    for (size_t i = 0; i < edges.size(); ++i) {
-        BRepBndLib::Add(edges[i].edge, boxes[i]);
-        double reach = std::max(tolerance, BRep_Tool::Tolerance(edges[i].edge));
-        for (TopExp_Explorer it(edges[i].edge, TopAbs_VERTEX); it.More(); it.Next())
-            reach = std::max(reach, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
-        boxes[i].Enlarge(reach);
-    }
     std::vector<size_t> unpaired;
     for (size_t i = 0; i < edges.size(); ++i)
         if (!paired[i]) unpaired.push_back(i);
-    for (size_t i = 0; i < edges.size(); ++i)
+    if (unpaired.empty()) return match;
+    try {
+        OCC_CATCH_SIGNALS
+        std::vector<Bnd_Box> boxes(edges.size());
+        for (size_t i = 0; i < edges.size(); ++i) {
+            BRepBndLib::Add(edges[i].edge, boxes[i]);
+            double reach = std::max(tolerance, BRep_Tool::Tolerance(edges[i].edge));
+            for (TopExp_Explorer it(edges[i].edge, TopAbs_VERTEX); it.More(); it.Next())
+                reach = std::max(reach, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
+            boxes[i].Enlarge(reach);
+            // an edge with no extent in space, or none that compares (NaN)
+            if (boxes[i].IsVoid() || !std::isfinite(boxes[i].CornerMin().X()) ||
+                !std::isfinite(boxes[i].CornerMax().X()))
+                return allLeft();
+        }
+        // the unpaired boxes by their least x: those that may meet a box [x0, x1] in x have theirs
+        // in [x0 - widest, x1]
+        auto lowestX = [&](size_t j) { return boxes[j].CornerMin().X(); };
+        std::sort(unpaired.begin(), unpaired.end(),
+                  [&](size_t a, size_t b) { return lowestX(a) < lowestX(b); });
+        double widest = 0;
         for (size_t j : unpaired)
-            if (!boxes[i].IsOut(boxes[j])) {
-                match.facesLeft.push_back(edges[i].face);
-                break;
-            }
+            widest = std::max(widest, boxes[j].CornerMax().X() - boxes[j].CornerMin().X());
+        for (size_t i = 0; i < edges.size(); ++i) {
+            const double x0 = boxes[i].CornerMin().X() - widest, x1 = boxes[i].CornerMax().X();
+            auto j = std::lower_bound(unpaired.begin(), unpaired.end(), x0,
+                                      [&](size_t k, double x) { return lowestX(k) < x; });
+            for (; j != unpaired.end() && lowestX(*j) <= x1; ++j)
+                if (!boxes[i].IsOut(boxes[*j])) {
+                    match.facesLeft.push_back(edges[i].face);
+                    break;
+                }
+        }
+    } catch (const Standard_Failure&) {
+        return allLeft();
+    }
     std::sort(match.facesLeft.begin(), match.facesLeft.end());
     match.facesLeft.erase(std::unique(match.facesLeft.begin(), match.facesLeft.end()),
                           match.facesLeft.end());
