@@ -10,16 +10,17 @@
 #include <optional>
 #include <vector>
 
+#include "tessellate/LeastBoundRing.hpp"
+
 namespace nurbslod {
 
 namespace {
 
-using Triangle = std::array<std::uint32_t, 3>;
-
-double cross(const Point2& a, const Point2& b, const Point2& c) {
-    const Point2 ab = b - a, ac = c - a;
-    return ab.x() * ac.y() - ab.y() * ac.x();
-}
+using Triangle = RingTriangle;
+using ring::cross;
+using ring::emptyRingTriangle;
+using ring::segmentsCross;
+using ring::trianglesOfSplits;
 
 // The vertices around v in counter-clockwise order n0 .. nm when v lies on the mesh's boundary
 // and its triangles (v, n_i, n_i+1) form one fan; none otherwise (an inner vertex, a pinch).
@@ -69,12 +70,6 @@ struct Box {
 Box boxOf(const Point2& a, const Point2& b) {
     return {std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()),
             std::max(a.y(), b.y())};
-}
-
-// Proper crossing of segments ab and cd in the plane (touching at an end does not count).
-bool segmentsCross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-    const double c1 = cross(a, b, c), c2 = cross(a, b, d), c3 = cross(c, d, a), c4 = cross(c, d, b);
-    return ((c1 > 0 && c2 < 0) || (c1 < 0 && c2 > 0)) && ((c3 > 0 && c4 < 0) || (c3 < 0 && c4 > 0));
 }
 
 // An old inner edge in the plane normal to the mean normal, with its ends' heights along it.
@@ -127,41 +122,6 @@ struct ReleaseTablesAfter {
     std::size_t size;
     ~ReleaseTablesAfter() { tables.releaseAfter(size); }
 };
-
-// Whether the triangle (i, k, j) of a ring, uv(n) its points in (u, v), turns counter-clockwise
-// with more than `minimumArea` and holds no other point of the ring (n < size), in or on it.
-template <class Uv>
-bool emptyRingTriangle(const Uv& uv, std::size_t size, std::size_t i, std::size_t k, std::size_t j,
-                       double minimumArea) {
-    if (!(cross(uv(i), uv(k), uv(j)) > minimumArea)) return false;
-    for (std::size_t w = 0; w < size; ++w) {
-        if (w == i || w == k || w == j) continue;
-        if (cross(uv(i), uv(k), uv(w)) >= -minimumArea &&
-            cross(uv(k), uv(j), uv(w)) >= -minimumArea &&
-            cross(uv(j), uv(i), uv(w)) >= -minimumArea)
-            return false;
-    }
-    return true;
-}
-
-// The triangles of a polygon recurrence over the ring n0 .. nm: split[i * ring.size() + j] is
-// the apex over the side (i, j) of the best triangulation of the sub-polygon i .. j.
-std::vector<Triangle> trianglesOfSplits(const std::vector<std::uint32_t>& ring,
-                                        const std::vector<std::size_t>& split) {
-    const std::size_t size = ring.size();
-    std::vector<Triangle> triangles;
-    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, size - 1}};
-    while (!pending.empty()) {
-        const auto [i, j] = pending.back();
-        pending.pop_back();
-        if (j < i + 2) continue;
-        const std::size_t k = split[i * size + j];
-        triangles.push_back({ring[i], ring[k], ring[j]});
-        pending.push_back({i, k});
-        pending.push_back({k, j});
-    }
-    return triangles;
-}
 
 // The triangulation of the ring n0 .. nm (closed by the chord nm -> n0 that the points to drop
 // lie on) that least changes the surface, and that change. `old` are the triangles about those
@@ -465,65 +425,6 @@ constexpr std::size_t kLargestBoundedRing = 8;
 // generated ruled face between a circle and an ellipse at relative 1e-4: 190 of 20,830 taken)
 // the bounds would cost more than the rest of the face.
 constexpr std::size_t kBoundedTries = 16, kBoundedTriesPerTaken = 8;
-
-// The triangulation of the ring n0 .. nm (closed by the chord nm -> n0) whose largest
-// triangle bound (`bound`) is least, with that bound: the polygon recurrence over the ring in
-// (u, v). A triangle is taken where it turns counter-clockwise in (u, v) with area and holds no
-// other ring point, its new sides are not edges outside the disk (`forbidden`) and cross no side
-// of the ring, and it faces the surface's normals at its corners the way the old triangles do
-// (`facing`: +1 or -1), so that it folds nowhere in space. A triangle over `limit` is not taken.
-// None where no triangulation is within it.
-std::optional<std::pair<std::vector<Triangle>, double>> leastBoundTriangulation(
-    const std::vector<std::uint32_t>& ring, const FaceMesh& mesh,
-    const std::vector<char>& forbidden, double facing, const TriangleBound& bound, double limit) {
-    constexpr double kNever = std::numeric_limits<double>::infinity();
-    const std::size_t size = ring.size(), m = size - 1;
-    auto uv = [&](std::size_t i) -> const Point2& { return mesh.vertices[ring[i]].uv; };
-    double extent = 0;
-    for (std::size_t i = 0; i < size; ++i)
-        for (std::size_t j = 0; j < size; ++j)
-            extent = std::max(extent, (uv(i) - uv(j)).squaredNorm());
-    const double minimumArea = 1e-14 * extent;
-    // sides are edges already; a diagonal must cross no side (the chord included)
-    auto edgeUsable = [&](std::size_t i, std::size_t j) {
-        if (j == i + 1 || (i == 0 && j == m)) return true;
-        if (forbidden[i * size + j]) return false;
-        for (std::size_t k = 0; k < size; ++k)
-            if (segmentsCross(uv(i), uv(j), uv(k), uv((k + 1) % size))) return false;
-        return true;
-    };
-    auto triangleCost = [&](std::size_t i, std::size_t k, std::size_t j) {
-        if (!emptyRingTriangle(uv, size, i, k, j, minimumArea)) return kNever;
-        const auto& a = mesh.vertices[ring[i]];
-        const auto& b = mesh.vertices[ring[k]];
-        const auto& c = mesh.vertices[ring[j]];
-        const Vector3 n = (b.position - a.position).cross(c.position - a.position);
-        if (!(facing * n.dot(a.normal + b.normal + c.normal) > 1e-6 * n.norm())) return kNever;
-        const double value = bound({ring[i], ring[k], ring[j]});
-        return value <= limit ? value : kNever;
-    };
-    std::vector<double> cost(size * size, 0.0);
-    std::vector<std::size_t> split(size * size, 0);
-    std::vector<char> usable(size * size, 0);
-    for (std::size_t i = 0; i < size; ++i)
-        for (std::size_t j = i + 1; j < size; ++j) usable[i * size + j] = edgeUsable(i, j);
-    for (std::size_t length = 2; length <= m; ++length)
-        for (std::size_t i = 0; i + length <= m; ++i) {
-            const std::size_t j = i + length;
-            double best = kNever;
-            if (usable[i * size + j])
-                for (std::size_t k = i + 1; k < j; ++k) {
-                    if (!usable[i * size + k] || !usable[k * size + j]) continue;
-                    const double below = std::max(cost[i * size + k], cost[k * size + j]);
-                    if (!(below < best)) continue;
-                    const double c = std::max(below, triangleCost(i, k, j));
-                    if (c < best) best = c, split[i * size + j] = k;
-                }
-            cost[i * size + j] = best;
-        }
-    if (cost[m] == kNever) return std::nullopt;
-    return std::make_pair(trianglesOfSplits(ring, split), cost[m]);
-}
 
 // v lies on the chord from `last` to `first` in space, strictly between them.
 bool onChord(const FaceMesh& mesh, std::uint32_t v, std::uint32_t last, std::uint32_t first) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tessellate/FaceMesh.hpp"
+#include "tessellate/LeastBoundRing.hpp"
 
 namespace nurbslod {
 
@@ -28,7 +29,6 @@ namespace nurbslod {
 // against the surface itself: `triangleBound`, where given, bounds how far a triangle of the
 // face's vertices (by index) is from the surface, both ways, and a re-triangulation whose every
 // triangle is within `surfaceShare` plus the allowance that way is taken too.
-using TriangleBound = std::function<double(const std::array<std::uint32_t, 3>& triangle)>;
 std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& sharedOffsets,
                                      const std::vector<double>& slack, double allowance,
                                      const TriangleBound& triangleBound = nullptr,
