@@ -196,6 +196,7 @@ struct TessellateArguments {
     std::string model, output, mode = "guaranteed";
     ToleranceArguments tolerance;
     int threads = 0;
+    bool compact = false;
 };
 
 TopoDS_Shape readModel(const std::string& path) {
@@ -235,6 +236,7 @@ int runTessellate(const TessellateArguments& arguments) {
         absoluteTolerance(arguments.tolerance, model.boundingBoxDiagonal, defaultRelativeTolerance);
     options.mode = arguments.mode == "approximate" ? ErrorMode::Approximate : ErrorMode::Guaranteed;
     options.threads = arguments.threads;
+    options.compact = arguments.compact;
     auto progress = std::make_shared<ProgressPrinter>("tessellated");
     options.progress = [progress](std::size_t done, std::size_t total) {
         (*progress)(done, total);
@@ -427,6 +429,10 @@ int main(int argc, char** argv) {
                      "guaranteed: never more than the tolerance; approximate: fewer triangles")
         ->check(CLI::IsMember({"guaranteed", "approximate"}));
     tessellateCommand->add_option("--threads", tessellate.threads, "0: all cores");
+    tessellateCommand->add_flag(
+        "--compact", tessellate.compact,
+        "guaranteed mode: fewer triangles within the same tolerance, for more time (inner points "
+        "removed where every new triangle is bounded against the surface)");
 
     VerifyArguments verify;
     CLI::App* verifyCommand = app.add_subcommand(

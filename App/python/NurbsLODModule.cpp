@@ -163,7 +163,7 @@ struct Call {
 // Checks every argument before the (possibly long) work starts.
 Call parseCall(const py::object& shape, std::optional<double> tolerance,
                std::optional<double> relative, const std::string& mode, int threads,
-               const py::object& progress) {
+               const py::object& progress, bool compact = false) {
     Call call;
     if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
         throw py::type_error("NurbsLOD: progress must be None or a callable (stage, done, total)");
@@ -171,6 +171,7 @@ Call parseCall(const py::object& shape, std::optional<double> tolerance,
     call.tolerance = toleranceRequest(tolerance, relative);
     call.options.mode = errorMode(mode);
     call.options.threads = threadCount(threads);
+    call.options.compact = compact;
     call.source = shapeSource(shape);
     return call;
 }
@@ -249,8 +250,8 @@ py::array_t<std::uint32_t> indexArray(const std::vector<std::array<std::uint32_t
 
 py::dict tessellate(const py::object& shape, std::optional<double> tolerance,
                     std::optional<double> relative, const std::string& mode, int threads,
-                    const py::object& progress) {
-    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
+                    const py::object& progress, bool compact) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress, compact);
     const TessellationResult result = run(call);
     const Mesh& mesh = result.mesh;
     py::dict out;
@@ -266,8 +267,9 @@ py::dict tessellate(const py::object& shape, std::optional<double> tolerance,
 
 py::dict exportMesh(const py::object& shape, const py::object& path,
                     std::optional<double> tolerance, std::optional<double> relative,
-                    const std::string& mode, int threads, const py::object& progress) {
-    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
+                    const std::string& mode, int threads, const py::object& progress,
+                    bool compact) {
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress, compact);
     const std::string outPath = py::module_::import("os").attr("fspath")(path).cast<std::string>();
     const TessellationResult result = run(call);
     {
@@ -279,7 +281,7 @@ py::dict exportMesh(const py::object& shape, const py::object& path,
 
 py::object toMesh(const py::object& shape, std::optional<double> tolerance,
                   std::optional<double> relative, const std::string& mode, int threads,
-                  const py::object& progress) {
+                  const py::object& progress, bool compact) {
     // Imported first: outside FreeCAD there is no point tessellating.
     py::module_ meshModule;
     py::module_ freecad;
@@ -290,7 +292,7 @@ py::object toMesh(const py::object& shape, std::optional<double> tolerance,
         throw py::import_error(std::string("NurbsLOD.to_mesh needs FreeCAD's Mesh module: ") +
                                error.what());
     }
-    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress);
+    const Call call = parseCall(shape, tolerance, relative, mode, threads, progress, compact);
     const TessellationResult result = run(call);
     const Mesh& mesh = result.mesh;
 
@@ -404,11 +406,15 @@ PYBIND11_MODULE(NurbsLOD, m) {
 
     m.def("tessellate", &tessellate, py::arg("shape"), py::arg("tolerance") = py::none(),
           py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
-          py::arg("progress") = py::none(),
+          py::arg("progress") = py::none(), py::arg("compact") = false,
           R"(Tessellates every face of the shape within the tolerance.
 
 mode: "guaranteed" (the mesh never deviates more than the tolerance) or "approximate"
 (the paper's approximate error: fewer triangles). threads: 0 uses all cores.
+compact: guaranteed mode only; removes the inner points whose fans can be re-triangulated
+with each triangle bounded within the tolerance: the same guarantee, fewer triangles
+(0.92x over the project's benchmark models, down to 0.2x on free-form faces), about
+1.8x the tessellation time.
 progress: None, or a callable progress(stage, done, total), stage "import" or "tessellate",
 called in the caller's thread about ten times a second and when a stage ends (a FreeCAD
 command may update a progress dialog and process events there); an exception it raises
@@ -432,6 +438,7 @@ ValueError) for a file or shape that cannot be read.)");
     m.def("export", &exportMesh, py::arg("shape"), py::arg("path"),
           py::arg("tolerance") = py::none(), py::arg("relative") = py::none(),
           py::arg("mode") = "guaranteed", py::arg("threads") = 0, py::arg("progress") = py::none(),
+          py::arg("compact") = false,
           R"(Tessellates the shape like tessellate() and writes the mesh to path.
 
 The format follows the extension: .obj (one group per face, "g FaceN"), .ply, .stl, .off.
@@ -460,7 +467,7 @@ Returns a dict of numpy arrays and a summary:
 
     m.def("to_mesh", &toMesh, py::arg("shape"), py::arg("tolerance") = py::none(),
           py::arg("relative") = py::none(), py::arg("mode") = "guaranteed", py::arg("threads") = 0,
-          py::arg("progress") = py::none(),
+          py::arg("progress") = py::none(), py::arg("compact") = false,
           R"(Tessellates the shape like tessellate() and returns a FreeCAD Mesh.Mesh.
 
 Needs FreeCAD (freecad or freecadcmd).)");

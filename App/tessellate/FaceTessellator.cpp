@@ -15,6 +15,7 @@
 #include "geometry/PointSetEvaluator.hpp"
 #include "tessellate/CellErrorBound.hpp"
 #include "tessellate/CellTriangulation.hpp"
+#include "tessellate/InteriorPoints.hpp"
 #include "tessellate/IsoRunLines.hpp"
 #include "tessellate/KdTreeGrid.hpp"
 #include "tessellate/NeedleSplit.hpp"
@@ -1785,6 +1786,21 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         };
     removeOpenBoundaryPoints(mesh, sharedOffsets, triangleSlack, allowance, boundedBySurface,
                              budget_.surface);
+    if (mode_ == ErrorMode::Guaranteed && choices_.compact) {
+        // An inner triangle has only the surface between it and the face: it may take the
+        // whole sum of the shares (ErrorBudget), bounded on its own instead of by its cell.
+        const double inner =
+            budget_.surface + budget_.trimming() + 0.5 * budget_.shareGap + budget_.openChords;
+        const auto& v = mesh.vertices;
+        auto boundOf = [&](const RingTriangle& t, double target) {
+            return triangleBound({v[t[0]].uv, v[t[1]].uv, v[t[2]].uv},
+                                 {v[t[0]].position, v[t[1]].position, v[t[2]].position}, target);
+        };
+        // a target below zero stops triangleBound at its sampled distance, a lower bound
+        removeInteriorPoints(
+            mesh, [&](const RingTriangle& t) { return boundOf(t, -1.0); },
+            [&](const RingTriangle& t) { return boundOf(t, inner); }, inner);
+    }
     splitNeedles(mesh.triangles,
                  [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; });
     if (face_.reversed)

@@ -32,6 +32,7 @@ struct CellChoices {
     bool middleSplits = true;
     bool openPointsSpendCellSlack = true;
     bool openPointsBoundedBySurface = true;
+    bool compact = false;
     // The face's free edges (model edge indices, sorted; guaranteed mode, and only where one of
     // the two choices below asks for their chords). A cell whose cut would leave a point on one
     // of their chords is cut the other way where that lowers its bound enough

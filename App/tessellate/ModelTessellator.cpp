@@ -1678,6 +1678,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
             choices.middleSplits = options.middleSplits;
             choices.openPointsSpendCellSlack = options.openPointsSpendCellSlack;
             choices.openPointsBoundedBySurface = options.openPointsBoundedBySurface;
+            choices.compact = options.compact;
             // A face asked to refine at its free chords takes finer cells there, where the
             // removal may drop their points (not on chords on the surface, where every point
             // stays), and, as a lone face tried with its free edges as curve uses, its cells

@@ -55,6 +55,19 @@ class CommandLine(TempDirTestCase):
         for key in ("faces", "triangles", "vertices", "tolerance", "mode", "faces_failed"):
             self.assertEqual(python[key], summary[key], key)
 
+    def test_compact_flag_takes_fewer_triangles(self):
+        sphere = self.path("sphere.brep")
+        Part.makeSphere(10).exportBrep(sphere)
+        counts = []
+        for flags in ([], ["--compact"]):
+            run = nurbslod("tessellate", sphere, "-o", self.path("sphere.obj"), "--tolerance",
+                           "0.01", *flags)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            counts.append(json.loads(run.stdout.strip().splitlines()[-1])["triangles"])
+        self.assertLess(counts[1], 0.9 * counts[0])
+        run = nurbslod("verify", sphere, self.path("sphere.obj"), "--tolerance", "0.01")
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+
     def test_hole_wound_like_outer_wire_is_meshed_and_reported(self):
         # tests/data/hole_wound_like_outer.brep: the top of a 10 x 10 x 1 box less a cylinder of
         # radius 2 about (5, 5), its hole's wire reversed in the file (OpenCASCADE's check:

@@ -157,6 +157,30 @@ class TessellateSolids(ArrayContract):
         self.assertLessEqual(approximate["summary"]["triangles"],
                              guaranteed["summary"]["triangles"])
 
+    def test_compact_keeps_the_guarantee_with_fewer_triangles(self):
+        # tolerance 0.01 on a sphere of radius 10 is relative 2.9e-4 of its diagonal
+        radius, tolerance = 10.0, 0.01
+        sphere = Part.makeSphere(radius)
+        plain = NurbsLOD.tessellate(sphere, tolerance=tolerance)
+        compact = NurbsLOD.tessellate(sphere, tolerance=tolerance, compact=True)
+        self.check_result(compact, sphere, tolerance)
+        self.check_closed(compact["triangles"])
+        self.assertLess(compact["summary"]["triangles"], 0.9 * plain["summary"]["triangles"])
+        # the guarantee, as for the plain mesh: no triangle's centroid or side middle is inside
+        # the sphere by more than the tolerance (the corners are on it)
+        points, triangles = compact["points"], compact["triangles"]
+        np.testing.assert_allclose(np.linalg.norm(points, axis=1), radius, atol=1e-9)
+        corners = points[triangles]
+        for inner in (corners.mean(axis=1), (corners[:, 0] + corners[:, 1]) / 2,
+                      (corners[:, 1] + corners[:, 2]) / 2, (corners[:, 2] + corners[:, 0]) / 2):
+            self.assertGreaterEqual(np.linalg.norm(inner, axis=1).min(), radius - tolerance)
+        # approximate mode has no such bound to keep: compact leaves it as it is
+        self.assertEqual(
+            NurbsLOD.tessellate(sphere, tolerance=tolerance, mode="approximate",
+                                compact=True)["summary"]["triangles"],
+            NurbsLOD.tessellate(sphere, tolerance=tolerance,
+                                mode="approximate")["summary"]["triangles"])
+
     def test_thread_count_does_not_change_the_mesh(self):
         shape = Part.makeCylinder(5, 12).fuse(Part.makeSphere(6, FreeCAD.Vector(0, 0, 12)))
         one = NurbsLOD.tessellate(shape, tolerance=0.01, threads=1)
