@@ -109,16 +109,9 @@ std::size_t removeInteriorPoints(FaceMesh& mesh, const TriangleBound& lowerBound
             }
         if (std::find(sideInside.begin(), sideInside.end(), 0) != sideInside.end()) continue;
         if (!(leastDistanceAtPoint(v, *ring, mesh) <= limit)) continue;
-        double facing = 0;
-        for (std::size_t t : fan) {
-            const auto& a = mesh.vertices[mesh.triangles[t][0]];
-            const auto& b = mesh.vertices[mesh.triangles[t][1]];
-            const auto& c = mesh.vertices[mesh.triangles[t][2]];
-            facing += (b.position - a.position)
-                          .cross(c.position - a.position)
-                          .dot(a.normal + b.normal + c.normal);
-        }
-        const double side = facing >= 0 ? 1.0 : -1.0;
+        std::vector<RingTriangle> old;
+        for (std::size_t t : fan) old.push_back(mesh.triangles[t]);
+        const double side = ring::facingOf(mesh, old);
         const auto likely =
             leastBoundTriangulation(*ring, mesh, forbidden, side, lowerBound, limit);
         if (!likely) continue;  // no triangulation is within the limit at the points sampled
@@ -139,10 +132,7 @@ std::size_t removeInteriorPoints(FaceMesh& mesh, const TriangleBound& lowerBound
         }
         ++count;
     }
-    std::size_t out = 0;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        if (!removed[t]) mesh.triangles[out++] = mesh.triangles[t];
-    mesh.triangles.resize(out);
+    ring::dropRemoved(mesh.triangles, removed);
     return count;
 }
 

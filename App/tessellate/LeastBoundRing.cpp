@@ -7,6 +7,26 @@ namespace nurbslod {
 
 namespace ring {
 
+double facingOf(const FaceMesh& mesh, const std::vector<RingTriangle>& triangles) {
+    double facing = 0;
+    for (const RingTriangle& t : triangles) {
+        const auto& a = mesh.vertices[t[0]];
+        const auto& b = mesh.vertices[t[1]];
+        const auto& c = mesh.vertices[t[2]];
+        facing += (b.position - a.position)
+                      .cross(c.position - a.position)
+                      .dot(a.normal + b.normal + c.normal);
+    }
+    return facing >= 0 ? 1.0 : -1.0;
+}
+
+void dropRemoved(std::vector<RingTriangle>& triangles, const std::vector<char>& removed) {
+    std::size_t out = 0;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        if (!removed[t]) triangles[out++] = triangles[t];
+    triangles.resize(out);
+}
+
 double cross(const Point2& a, const Point2& b, const Point2& c) {
     const Point2 ab = b - a, ac = c - a;
     return ab.x() * ac.y() - ab.y() * ac.x();

@@ -32,6 +32,13 @@ std::optional<std::pair<std::vector<RingTriangle>, double>> leastBoundTriangulat
 
 namespace ring {
 
+// +1 where the triangles, summed, turn the way the surface's normals at their corners point,
+// else -1: the `facing` that leastBoundTriangulation keeps for their region.
+double facingOf(const FaceMesh& mesh, const std::vector<RingTriangle>& triangles);
+
+// Drops the triangles marked removed (by index), keeping the others' order.
+void dropRemoved(std::vector<RingTriangle>& triangles, const std::vector<char>& removed);
+
 // Twice the signed area of the triangle abc in (u, v): positive counter-clockwise.
 double cross(const Point2& a, const Point2& b, const Point2& c);
 

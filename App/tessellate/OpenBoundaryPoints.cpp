@@ -578,17 +578,8 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
             ++boundedTried;
             // bounded against the surface instead (their corners' offsets included), turned
             // against the surface's normals as the old triangles are
-            double facing = 0;
-            for (const Triangle& t : old) {
-                const auto& a = mesh.vertices[t[0]];
-                const auto& b = mesh.vertices[t[1]];
-                const auto& c = mesh.vertices[t[2]];
-                facing += (b.position - a.position)
-                              .cross(c.position - a.position)
-                              .dot(a.normal + b.normal + c.normal);
-            }
             const auto bounded =
-                leastBoundTriangulation(ring, mesh, forbidden, facing >= 0 ? 1.0 : -1.0,
+                leastBoundTriangulation(ring, mesh, forbidden, ring::facingOf(mesh, old),
                                         triangleBound, surfaceShare + allowance);
             if (bounded) {
                 chosen = std::move(bounded->first);
@@ -648,10 +639,7 @@ std::size_t removeOpenBoundaryPoints(FaceMesh& mesh, const std::vector<double>& 
         // v alone, its fan as it is now
         drop({v});
     }
-    std::size_t out = 0;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        if (!removed[t]) mesh.triangles[out++] = mesh.triangles[t];
-    mesh.triangles.resize(out);
+    ring::dropRemoved(mesh.triangles, removed);
     return count;
 }
 
