@@ -43,6 +43,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 MODEL_EXTENSIONS = (".stp", ".step", ".iges", ".igs", ".brep", ".brp")
 METHODS = ("nurbslod-guaranteed", "nurbslod-approximate", "brepmesh")
+# With --compact: guaranteed mode with --compact beside the others.
+COMPACT_METHODS = ("nurbslod-guaranteed", "nurbslod-compact", "nurbslod-approximate", "brepmesh")
+
+
+def ours(methods):
+    """The methods that are NurbsLOD's, compared with BRepMesh in the ratio rows."""
+    return [m for m in methods if m != "brepmesh"]
 # The independent judge, in ../shared/tools beside the checkout.
 JUDGE = os.path.join(os.path.dirname(REPO), "shared", "tools", "meshjudge.py")
 
@@ -88,8 +95,11 @@ def tessellate(args, model, method, tol, mesh):
     if method == "brepmesh":
         cmd = [args.timer, model, repr(tol), mesh, str(args.threads), "0.5"]
     else:
+        mode = "guaranteed" if method == "nurbslod-compact" else method.split("-")[1]
         cmd = [args.nurbslod, "tessellate", model, "-o", mesh, "--tolerance", repr(tol),
-               "--mode", method.split("-")[1], "--threads", str(args.threads)]
+               "--mode", mode, "--threads", str(args.threads)]
+        if method == "nurbslod-compact":
+            cmd.append("--compact")
     result = {"cmd": " ".join(shlex.quote(c) for c in cmd)}
     for _ in range(max(1, args.repeat)):
         rc, out, err, wall = run(cmd, args.timeout)
@@ -259,7 +269,7 @@ def build_rows(results, with_judge):
                         j["status"] if j else "not run"]
             rows.append(row)
         b = r["methods"]["brepmesh"]["tessellate"]
-        for method in METHODS[:2]:
+        for method in ours(METHODS):
             t = r["methods"][method]["tessellate"]
             row = [r["model"], "%g" % r["relative"], method.replace("nurbslod-", "ratio ") +
                    "/brepmesh", fmt(ratio(t.get("triangles"), b.get("triangles")), "%.2fx"),
@@ -342,7 +352,7 @@ def summary_ratios(results):
     out = {}
     for r in results:
         b = r["methods"]["brepmesh"]["tessellate"]
-        for method in METHODS[:2]:
+        for method in ours(METHODS):
             t = r["methods"][method]["tessellate"]
             for key in ("triangles", "seconds", "wall_seconds"):
                 q = ratio(t.get(key), b.get(key))
@@ -359,6 +369,8 @@ def main():
     ap.add_argument("--threads", type=int, default=1,
                     help="NurbsLOD --threads; BRepMesh runs parallel when != 1 (default 1)")
     ap.add_argument("--judge", action="store_true", help="also run meshjudge.py (slow)")
+    ap.add_argument("--compact", action="store_true",
+                    help="also run guaranteed mode with --compact (nurbslod-compact)")
     ap.add_argument("--judge-relative", nargs="+", type=float,
                     help="run meshjudge only at these R (default: every R)")
     ap.add_argument("--out", help="keep the meshes here (default: a temporary folder)")
@@ -375,6 +387,9 @@ def main():
     ap.add_argument("--md", default=os.path.join(REPO, "docs", "benchmark.md"))
     ap.add_argument("--json", default=os.path.join(REPO, "docs", "benchmark.json"))
     args = ap.parse_args()
+    if args.compact:
+        global METHODS
+        METHODS = COMPACT_METHODS
 
     if not os.path.isdir(args.corpus):
         print("model_benchmark: corpus %s not found; skipping" % args.corpus)
