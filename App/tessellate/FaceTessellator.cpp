@@ -1787,10 +1787,10 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
     removeOpenBoundaryPoints(mesh, sharedOffsets, triangleSlack, allowance, boundedBySurface,
                              budget_.surface);
     if (mode_ == ErrorMode::Guaranteed && choices_.compact) {
-        // An inner triangle has only the surface between it and the face: it may take the
-        // whole sum of the shares (ErrorBudget), bounded on its own instead of by its cell.
-        const double inner =
-            budget_.surface + budget_.trimming() + 0.5 * budget_.shareGap + budget_.openChords;
+        // An inner triangle has only the surface between it and the face: it may take what a
+        // full cell takes (the whole sum of the shares), bounded on its own instead of by the
+        // cell's bound for any triangles over it.
+        const double inner = wholeCellTarget(budget_, mode_);
         const auto& v = mesh.vertices;
         auto boundOf = [&](const RingTriangle& t, double target) {
             return triangleBound({v[t[0]].uv, v[t[1]].uv, v[t[2]].uv},
