@@ -22,6 +22,7 @@
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 #include "tessellate/RectangleInRegion.hpp"
+#include "tessellate/TriangleDeviation.hpp"
 #include "tessellate/WindingRectangleClip.hpp"
 
 namespace nurbslod {
@@ -739,6 +740,9 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
         seen = std::max(seen, (patches_->point(q.x(), q.y()) - affineAt(q)).norm());
     }
     if (!(seen <= target)) return seen;
+    // over the triangle itself where the surface's degrees allow (far closer than over its box)
+    if (const auto deviation = triangleDeviation(*patches_, uv, position, target, kMostSpansInCell))
+        return *deviation;
     // the box of the corners, a step beyond each side (the frame's rounding), cut at span borders
     const Point2 low = uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);
     const Point2 high = uv[0].cwiseMax(uv[1]).cwiseMax(uv[2]);

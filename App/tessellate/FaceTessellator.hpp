@@ -114,8 +114,9 @@ private:
     // already finds it above, or where the cell holds more than kMostSpansInCell spans.
     static constexpr std::size_t kMostSpansInCell = 1024;
     // How far a triangle with these corners (parameters, positions) may be from the surface,
-    // both ways (affineDeviation over the spans' pieces of its (u, v) box, its corners on the
-    // surface's domain; removeOpenBoundaryPoints). A value above `target` only tells that the
+    // both ways (triangleDeviation over its pieces in the spans, its corners on the surface's
+    // domain; affineDeviation over the pieces of its box where the degrees are too high;
+    // removeOpenBoundaryPoints, removeInteriorPoints). A value above `target` only tells that the
     // triangle is not within it: the search stops at the first surface point or piece beyond.
     double triangleBound(const std::array<Point2, 3>& uv, const std::array<Point3, 3>& position,
                          double target) const;

@@ -1,0 +1,141 @@
+#include "tessellate/TriangleDeviation.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "geometry/TriangularBezierPatch.hpp"
+#include "tessellate/CellErrorBound.hpp"
+
+namespace nurbslod {
+
+namespace {
+
+// The part of the convex polygon `polygon` inside the box [low, high] (Sutherland-Hodgman, one
+// side of the box at a time).
+std::vector<Point2> clipToBox(std::vector<Point2> polygon, const Point2& low, const Point2& high) {
+    for (int side = 0; side < 4 && !polygon.empty(); ++side) {
+        const int axis = side % 2;
+        const bool keepAbove = side < 2;
+        const double border = keepAbove ? low[axis] : high[axis];
+        auto inside = [&](const Point2& p) {
+            return keepAbove ? p[axis] >= border : p[axis] <= border;
+        };
+        std::vector<Point2> kept;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const Point2& a = polygon[i];
+            const Point2& b = polygon[(i + 1) % polygon.size()];
+            if (inside(a)) kept.push_back(a);
+            if (inside(a) != inside(b)) {
+                const double f = (border - a[axis]) / (b[axis] - a[axis]);
+                Point2 crossing = a + f * (b - a);
+                crossing[axis] = border;
+                kept.push_back(crossing);
+            }
+        }
+        polygon = std::move(kept);
+    }
+    return polygon;
+}
+
+}  // namespace
+
+double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& corner,
+                         const std::array<Point3, 3>& image, double target, int depth) {
+    const double hull = TriangularBezierPatch(patch, corner).farthestFromAffine(image);
+    if (hull <= target || depth <= 0) return hull;
+    // the four triangles of the sides' middles; the affine map takes middles to middles
+    auto middle2 = [&](int a, int b) -> Point2 { return 0.5 * (corner[a] + corner[b]); };
+    auto middle3 = [&](int a, int b) -> Point3 { return 0.5 * (image[a] + image[b]); };
+    const Point2 q01 = middle2(0, 1), q12 = middle2(1, 2), q20 = middle2(2, 0);
+    const Point3 x01 = middle3(0, 1), x12 = middle3(1, 2), x20 = middle3(2, 0);
+    const std::array<std::array<Point2, 3>, 4> parts{
+        {{corner[0], q01, q20}, {q01, corner[1], q12}, {q20, q12, corner[2]}, {q12, q20, q01}}};
+    const std::array<std::array<Point3, 3>, 4> images{
+        {{image[0], x01, x20}, {x01, image[1], x12}, {x20, x12, image[2]}, {x12, x20, x01}}};
+    double bound = 0;
+    for (int k = 0; k < 4; ++k) {
+        bound = std::max(bound, triangleDeviation(patch, parts[k], images[k], target, depth - 1));
+        if (!(bound <= target)) return bound;
+    }
+    // each part's hull is a true bound, and so is the whole's: keep the smaller
+    return std::min(bound, hull);
+}
+
+std::optional<double> triangleDeviation(const BezierPatchGrid& patches,
+                                        const std::array<Point2, 3>& uv,
+                                        const std::array<Point3, 3>& image, double target,
+                                        std::size_t mostPieces) {
+    const BezierPatch& first = patches.patch(0, 0);
+    if (first.degreeU() + first.degreeV() > TriangularBezierPatch::kMostDegree) return std::nullopt;
+    // the affine map through the corners: image = X0 + G (q - q0)
+    Eigen::Matrix2d across;
+    across << uv[1].x() - uv[0].x(), uv[2].x() - uv[0].x(), uv[1].y() - uv[0].y(),
+        uv[2].y() - uv[0].y();
+    const double determinant = across.determinant();
+    const double scale = across.cwiseAbs().maxCoeff();
+    if (!(std::abs(determinant) > 1e-12 * scale * scale))
+        return std::numeric_limits<double>::infinity();
+    Eigen::Matrix<double, 3, 2> differences;
+    differences << image[1] - image[0], image[2] - image[0];
+    const Eigen::Matrix<double, 3, 2> gradient = differences * across.inverse();
+    auto affineAt = [&](const Point2& q) -> Point3 { return image[0] + gradient * (q - uv[0]); };
+
+    const Point2 low = uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);
+    const Point2 high = uv[0].cwiseMax(uv[1]).cwiseMax(uv[2]);
+    const int u0 = patches.spanIndexU(low.x()), u1 = patches.spanIndexU(high.x());
+    const int v0 = patches.spanIndexV(low.y()), v1 = patches.spanIndexV(high.y());
+    if (static_cast<std::size_t>(u1 - u0 + 1) * static_cast<std::size_t>(v1 - v0 + 1) > mostPieces)
+        return std::nullopt;
+    const auto& breaksU = patches.breakpointsU();
+    const auto& breaksV = patches.breakpointsV();
+    // pieces thinner than this share of the triangle's area hold no surface worth a bound of
+    // their own (their sides are bounded with their neighbours')
+    const double leastArea = 1e-12 * std::abs(determinant);
+    double bound = 0;
+    for (int su = u0; su <= u1; ++su)
+        for (int sv = v0; sv <= v1; ++sv) {
+            const Point2 from(breaksU[su], breaksV[sv]), to(breaksU[su + 1], breaksV[sv + 1]);
+            const std::vector<Point2> piece = (su == u0 && su == u1 && sv == v0 && sv == v1)
+                                                  ? std::vector<Point2>{uv[0], uv[1], uv[2]}
+                                                  : clipToBox({uv[0], uv[1], uv[2]}, from, to);
+            if (piece.size() < 3) continue;
+            const Point2 size = to - from;
+            auto local = [&](const Point2& q) -> Point2 { return (q - from).cwiseQuotient(size); };
+            // the hull over the piece's box first: a few times cheaper than the triangles', and
+            // enough for most pieces
+            {
+                Point2 boxLow = piece[0], boxHigh = piece[0];
+                for (const Point2& q : piece)
+                    boxLow = boxLow.cwiseMin(q), boxHigh = boxHigh.cwiseMax(q);
+                if (boxLow.x() < boxHigh.x() && boxLow.y() < boxHigh.y()) {
+                    const BezierPatch box =
+                        patches.piece(su, sv, boxLow.x(), boxHigh.x(), boxLow.y(), boxHigh.y());
+                    const double hull =
+                        affineDeviation(box, affineAt(boxLow), affineAt({boxHigh.x(), boxLow.y()}),
+                                        affineAt({boxLow.x(), boxHigh.y()}),
+                                        std::numeric_limits<double>::infinity(),
+                                        {Point2(0, 0), Point2(1, 0), Point2(0, 1)});
+                    if (hull <= target) {
+                        bound = std::max(bound, hull);
+                        continue;
+                    }
+                }
+            }
+            for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
+                const Point2 ab = piece[k] - piece[0], ac = piece[k + 1] - piece[0];
+                if (!(std::abs(ab.x() * ac.y() - ab.y() * ac.x()) > leastArea)) continue;
+                bound = std::max(
+                    bound,
+                    triangleDeviation(
+                        patches.patch(su, sv),
+                        {local(piece[0]), local(piece[k]), local(piece[k + 1])},
+                        {affineAt(piece[0]), affineAt(piece[k]), affineAt(piece[k + 1])}, target));
+                if (!(bound <= target)) return bound;
+            }
+        }
+    return bound;
+}
+
+}  // namespace nurbslod

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include "geometry/BezierPatch.hpp"
+#include "geometry/BezierPatchGrid.hpp"
+
+namespace nurbslod {
+
+// A bound on the distance between the Bezier patch `patch` over the triangle `corner` (its local
+// parameters) and the flat triangle `image` of those corners (the affine map between them, both
+// ways): the hull of the difference over the triangle itself (TriangularBezierPatch), the
+// triangle cut in four at its sides' middles where that hull is over `target`, `depth` times at
+// most. A value over the target says that no bound within it was found; stops at the first
+// part over it. The patch's degrees must sum to TriangularBezierPatch::kMostDegree at most.
+double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& corner,
+                         const std::array<Point3, 3>& image, double target, int depth = 3);
+
+// The same for a triangle of a B-spline surface's parameters (inside its domain): the triangle
+// cut at the spans' borders, each convex piece fanned into triangles bounded on their own span's
+// patch, against the affine map of the whole triangle. Nothing where the surface's degrees are
+// too high or the triangle crosses more than `mostPieces` span pairs.
+std::optional<double> triangleDeviation(const BezierPatchGrid& patches,
+                                        const std::array<Point2, 3>& uv,
+                                        const std::array<Point3, 3>& image, double target,
+                                        std::size_t mostPieces);
+
+}  // namespace nurbslod
