@@ -708,7 +708,8 @@ struct FaceTessellator::CellDecisions {
 };
 
 double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
-                                      const std::array<Point3, 3>& position, double target) const {
+                                      const std::array<Point3, 3>& position, double target,
+                                      bool sampleFirst) const {
     constexpr double kUnbounded = std::numeric_limits<double>::infinity();
     // only corners on the surface's domain: beyond it no piece holds the surface (its spans'
     // borders, first to last)
@@ -733,12 +734,13 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
     // lower bound of any bound: where it is over the target already, no piece is bounded (most
     // triangles that removeOpenBoundaryPoints tries on a strip of thin cells are far over it).
     double seen = 0;
-    for (const auto& [wa, wb, wc] :
-         {std::array{1.0 / 3, 1.0 / 3, 1.0 / 3}, std::array{0.5, 0.5, 0.0},
-          std::array{0.0, 0.5, 0.5}, std::array{0.5, 0.0, 0.5}}) {
-        const Point2 q = wa * uv[0] + wb * uv[1] + wc * uv[2];
-        seen = std::max(seen, (patches_->point(q.x(), q.y()) - affineAt(q)).norm());
-    }
+    if (sampleFirst)
+        for (const auto& [wa, wb, wc] :
+             {std::array{1.0 / 3, 1.0 / 3, 1.0 / 3}, std::array{0.5, 0.5, 0.0},
+              std::array{0.0, 0.5, 0.5}, std::array{0.5, 0.0, 0.5}}) {
+            const Point2 q = wa * uv[0] + wb * uv[1] + wc * uv[2];
+            seen = std::max(seen, (patches_->point(q.x(), q.y()) - affineAt(q)).norm());
+        }
     if (!(seen <= target)) return seen;
     // over the triangle itself where the surface's degrees allow (far closer than over its box)
     if (const auto deviation = triangleDeviation(*patches_, uv, position, target, kMostSpansInCell))
@@ -1796,14 +1798,33 @@ FaceMesh FaceTessellator::triangulate(const std::vector<BoundaryLoop>& loops,
         // cell's bound for any triangles over it.
         const double inner = wholeCellTarget(budget_, mode_);
         const auto& v = mesh.vertices;
-        auto boundOf = [&](const RingTriangle& t, double target) {
-            return triangleBound({v[t[0]].uv, v[t[1]].uv, v[t[2]].uv},
-                                 {v[t[0]].position, v[t[1]].position, v[t[2]].position}, target);
+        // The surface's distance from a triangle at its centre and its sides' middles (as
+        // triangleBound samples it), each side's kept: a ring's triangulations and the rings
+        // of neighbouring points share most sides.
+        std::unordered_map<std::uint64_t, double> sideDistance;
+        auto distanceAtMiddle = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+            const auto [at, fresh] = sideDistance.try_emplace(key, 0.0);
+            if (fresh) {
+                const Point2 q = 0.5 * (v[a].uv + v[b].uv);
+                at->second =
+                    (patches_->point(q.x(), q.y()) - 0.5 * (v[a].position + v[b].position)).norm();
+            }
+            return at->second;
         };
-        // a target below zero stops triangleBound at its sampled distance, a lower bound
-        removeInteriorPoints(
-            mesh, [&](const RingTriangle& t) { return boundOf(t, -1.0); },
-            [&](const RingTriangle& t) { return boundOf(t, inner); }, inner);
+        auto sampled = [&](const RingTriangle& t) {
+            const Point2 q = (v[t[0]].uv + v[t[1]].uv + v[t[2]].uv) / 3;
+            const Point3 centre = (v[t[0]].position + v[t[1]].position + v[t[2]].position) / 3;
+            return std::max({(patches_->point(q.x(), q.y()) - centre).norm(),
+                             distanceAtMiddle(t[0], t[1]), distanceAtMiddle(t[1], t[2]),
+                             distanceAtMiddle(t[2], t[0])});
+        };
+        auto bounded = [&](const RingTriangle& t) {
+            return triangleBound({v[t[0]].uv, v[t[1]].uv, v[t[2]].uv},
+                                 {v[t[0]].position, v[t[1]].position, v[t[2]].position}, inner,
+                                 /*sampleFirst=*/false);
+        };
+        removeInteriorPoints(mesh, sampled, bounded, inner);
     }
     splitNeedles(mesh.triangles,
                  [&](std::uint32_t i) -> const Point3& { return mesh.vertices[i].position; });

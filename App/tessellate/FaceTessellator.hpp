@@ -118,8 +118,9 @@ private:
     // domain; affineDeviation over the pieces of its box where the degrees are too high;
     // removeOpenBoundaryPoints, removeInteriorPoints). A value above `target` only tells that the
     // triangle is not within it: the search stops at the first surface point or piece beyond.
+    // `sampleFirst` false skips the surface points (a caller that has sampled them already).
     double triangleBound(const std::array<Point2, 3>& uv, const std::array<Point3, 3>& position,
-                         double target) const;
+                         double target, bool sampleFirst = true) const;
     double boundAcrossSpans(const std::array<ClipperLib::cInt, 4>& cell,
                             const std::vector<ClipperLib::cInt>& breaksX,
                             const std::vector<ClipperLib::cInt>& breaksY, double target,

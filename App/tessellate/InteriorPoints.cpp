@@ -1,6 +1,7 @@
 #include "tessellate/InteriorPoints.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -79,6 +80,12 @@ std::size_t removeInteriorPoints(FaceMesh& mesh, const TriangleBound& lowerBound
                   fan.end());
         return fan;
     };
+    struct SeenTriangle {
+        RingTriangle triangle;
+        double lower, bound;
+    };
+    constexpr double kNotYet = std::numeric_limits<double>::quiet_NaN();
+    std::vector<SeenTriangle> seen;
     std::size_t count = 0;
     for (std::uint32_t v = 0; v < vertexCount; ++v) {
         const FaceMesh::Vertex& vertex = mesh.vertices[v];
@@ -112,14 +119,30 @@ std::size_t removeInteriorPoints(FaceMesh& mesh, const TriangleBound& lowerBound
         std::vector<RingTriangle> old;
         for (std::size_t t : fan) old.push_back(mesh.triangles[t]);
         const double side = ring::facingOf(mesh, old);
-        const auto likely =
-            leastBoundTriangulation(*ring, mesh, forbidden, side, lowerBound, limit);
+        // each triangle's bounds asked once: both searches and the check between them meet
+        // the same triangles of the ring's points (always as ring[i], ring[k], ring[j], i < k < j)
+        seen.clear();
+        auto boundsOf = [&](const RingTriangle& t) -> SeenTriangle& {
+            for (SeenTriangle& known : seen)
+                if (known.triangle == t) return known;
+            seen.push_back({t, lowerBound(t), kNotYet});
+            return seen.back();
+        };
+        auto lowerOf = [&](const RingTriangle& t) { return boundsOf(t).lower; };
+        auto boundOf = [&](const RingTriangle& t) {
+            SeenTriangle& known = boundsOf(t);
+            if (!(known.lower <= limit)) return known.lower;
+            if (std::isnan(known.bound)) known.bound = bound(t);
+            return known.bound;
+        };
+        const auto likely = leastBoundTriangulation(*ring, mesh, forbidden, side, lowerOf, limit);
         if (!likely) continue;  // no triangulation is within the limit at the points sampled
         std::optional<std::vector<RingTriangle>> chosen;
         if (std::all_of(likely->first.begin(), likely->first.end(),
-                        [&](const RingTriangle& t) { return bound(t) <= limit; }))
+                        [&](const RingTriangle& t) { return boundOf(t) <= limit; }))
             chosen = likely->first;
-        else if (auto bounded = leastBoundTriangulation(*ring, mesh, forbidden, side, bound, limit))
+        else if (auto bounded =
+                     leastBoundTriangulation(*ring, mesh, forbidden, side, boundOf, limit))
             chosen = std::move(bounded->first);
         if (!chosen) continue;
         for (std::size_t t : fan) removed[t] = 1;
