@@ -104,6 +104,52 @@ Point3 TriangularBezierPatch::point(double l0, double l1, double l2) const {
     return projectHomogeneous(level[0]);
 }
 
+std::vector<std::vector<HomogeneousPoint3>> TriangularBezierPatch::levelsAt(
+    const std::array<double, 3>& at) const {
+    std::vector<std::vector<HomogeneousPoint3>> levels{poles_};
+    for (int m = degree_; m > 0; --m) {
+        const std::vector<HomogeneousPoint3>& above = levels.back();
+        std::vector<HomogeneousPoint3> level((m * (m + 1)) / 2);
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; i + j < m; ++j)
+                level[indexOf(m - 1, i, j)] = at[0] * above[indexOf(m, i + 1, j)] +
+                                              at[1] * above[indexOf(m, i, j + 1)] +
+                                              at[2] * above[indexOf(m, i, j)];
+        levels.push_back(std::move(level));
+    }
+    return levels;
+}
+
+TriangularBezierPatch TriangularBezierPatch::fromLevels(
+    const std::vector<std::vector<HomogeneousPoint3>>& levels, int degree,
+    const std::array<int, 3>& corners) {
+    TriangularBezierPatch part;
+    part.degree_ = degree;
+    part.poles_.resize(((degree + 1) * (degree + 2)) / 2);
+    for (int a = 0; a <= degree; ++a)
+        for (int b = 0; a + b <= degree; ++b) {
+            // copies of the old corners 0, 1, 2 and of the point (3) in this pole's multiset
+            std::array<int, 4> count{};
+            count[corners[0]] += a;
+            count[corners[1]] += b;
+            count[corners[2]] += degree - a - b;
+            part.poles_[indexOf(degree, a, b)] =
+                levels[count[3]][indexOf(degree - count[3], count[0], count[1])];
+        }
+    return part;
+}
+
+std::array<TriangularBezierPatch, 2> TriangularBezierPatch::halves(int side) const {
+    const int k = side, next = (side + 1) % 3;
+    std::array<double, 3> middle{};
+    middle[k] = middle[next] = 0.5;
+    const auto levels = levelsAt(middle);
+    std::array<int, 3> first{0, 1, 2}, second{0, 1, 2};
+    first[next] = 3;
+    second[k] = 3;
+    return {fromLevels(levels, degree_, first), fromLevels(levels, degree_, second)};
+}
+
 double TriangularBezierPatch::farthestFromAffine(const std::array<Point3, 3>& image) const {
     const int n = degree_, raised = n + 1;
     double farthest2 = 0;

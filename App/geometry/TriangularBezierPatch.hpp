@@ -33,6 +33,13 @@ public:
     // The point at barycentric coordinates (l0, l1, l2), by de Casteljau.
     Point3 point(double l0, double l1, double l2) const;
 
+    // The patches over the two halves of the triangle cut at the middle m of its side `side`
+    // (side k joins corners k and k + 1 mod 3): the half with m for corner k + 1, then the half
+    // with m for corner k, the other corners kept in place. By de Casteljau's algorithm at m,
+    // whose levels hold the nets of the triangles that m cuts off (level r's b_ijk is the
+    // blossom at r copies of m and i, j, k of the corners); exact, with no extrapolation.
+    std::array<TriangularBezierPatch, 2> halves(int side) const;
+
     // A bound on the distance between the patch and the affine map that takes the triangle's
     // corners to `image`, over the whole triangle: the largest control point of the difference
     // in degree n + 1 (the affine map times the weight is of degree n + 1; the patch raised once
@@ -43,6 +50,14 @@ public:
     static int indexOf(int n, int i, int j) { return (n - i) * (n - i + 1) / 2 + j; }
 
 private:
+    TriangularBezierPatch() = default;
+    // De Casteljau's levels at the point of barycentric coordinates `at`; the net of the triangle
+    // whose corners are `corners` (0, 1, 2: the triangle's own; 3: the point) read from them.
+    std::vector<std::vector<HomogeneousPoint3>> levelsAt(const std::array<double, 3>& at) const;
+    static TriangularBezierPatch fromLevels(
+        const std::vector<std::vector<HomogeneousPoint3>>& levels, int degree,
+        const std::array<int, 3>& corners);
+
     int degree_ = 0;
     std::vector<HomogeneousPoint3> poles_;
 };

@@ -41,26 +41,38 @@ std::vector<Point2> clipToBox(std::vector<Point2> polygon, const Point2& low, co
 
 }  // namespace
 
-double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& corner,
-                         const std::array<Point3, 3>& image, double target, int depth) {
-    const double hull = TriangularBezierPatch(patch, corner).farthestFromAffine(image);
-    if (hull <= target || depth <= 0) return hull;
-    // the four triangles of the sides' middles; the affine map takes middles to middles
-    auto middle2 = [&](int a, int b) -> Point2 { return 0.5 * (corner[a] + corner[b]); };
-    auto middle3 = [&](int a, int b) -> Point3 { return 0.5 * (image[a] + image[b]); };
-    const Point2 q01 = middle2(0, 1), q12 = middle2(1, 2), q20 = middle2(2, 0);
-    const Point3 x01 = middle3(0, 1), x12 = middle3(1, 2), x20 = middle3(2, 0);
-    const std::array<std::array<Point2, 3>, 4> parts{
-        {{corner[0], q01, q20}, {q01, corner[1], q12}, {q20, q12, corner[2]}, {q12, q20, q01}}};
-    const std::array<std::array<Point3, 3>, 4> images{
-        {{image[0], x01, x20}, {x01, image[1], x12}, {x20, x12, image[2]}, {x12, x20, x01}}};
-    double bound = 0;
-    for (int k = 0; k < 4; ++k) {
-        bound = std::max(bound, triangleDeviation(patch, parts[k], images[k], target, depth - 1));
-        if (!(bound <= target)) return bound;
-    }
-    // each part's hull is a true bound, and so is the whole's: keep the smaller
+namespace {
+
+// The bound over `part` against the flat triangle `image`, halved at its longest side (in
+// space) while over the target, `halvings` times at most.
+double boundOver(const TriangularBezierPatch& part, const std::array<Point3, 3>& image,
+                 double target, int halvings) {
+    const double hull = part.farthestFromAffine(image);
+    if (hull <= target || halvings <= 0) return hull;
+    int side = 0;
+    for (int k = 1; k < 3; ++k)
+        if ((image[(k + 1) % 3] - image[k]).squaredNorm() >
+            (image[(side + 1) % 3] - image[side]).squaredNorm())
+            side = k;
+    const int next = (side + 1) % 3;
+    // the affine map takes the side's middle to the middle of its image
+    const Point3 middle = 0.5 * (image[side] + image[next]);
+    std::array<Point3, 3> first = image, second = image;
+    first[next] = middle;
+    second[side] = middle;
+    const auto halves = part.halves(side);
+    double bound = boundOver(halves[0], first, target, halvings - 1);
+    if (!(bound <= target)) return bound;
+    bound = std::max(bound, boundOver(halves[1], second, target, halvings - 1));
+    // each half's hull is a true bound, and so is the whole's: keep the smaller
     return std::min(bound, hull);
+}
+
+}  // namespace
+
+double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& corner,
+                         const std::array<Point3, 3>& image, double target, int halvings) {
+    return boundOver(TriangularBezierPatch(patch, corner), image, target, halvings);
 }
 
 std::optional<double> triangleDeviation(const BezierPatchGrid& patches,

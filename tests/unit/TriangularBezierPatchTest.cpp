@@ -57,6 +57,40 @@ TEST(TriangularBezierPatch, IsTheTensorPatchOverTheTriangle) {
     }
 }
 
+// Each half is the tensor patch over its own triangle: cut at the middle of side k, the half
+// that keeps corner k has the middle for corner k + 1, and the other the middle for corner k.
+TEST(TriangularBezierPatch, HalvesAreThePatchOverEachHalf) {
+    std::mt19937 random(13);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (const auto& [degreeU, degreeV] : {std::pair{1, 1}, std::pair{2, 2}, std::pair{5, 3}}) {
+        const BezierPatch patch = randomRationalPatch(random, degreeU, degreeV);
+        const auto triangle = randomTriangle(random);
+        const TriangularBezierPatch whole(patch, triangle);
+        for (int side = 0; side < 3; ++side) {
+            const int next = (side + 1) % 3;
+            const Point2 middle = 0.5 * (triangle[side] + triangle[next]);
+            std::array<Point2, 3> first = triangle, second = triangle;
+            first[next] = middle;
+            second[side] = middle;
+            const auto halves = whole.halves(side);
+            for (int h = 0; h < 2; ++h) {
+                const auto& corners = h == 0 ? first : second;
+                ASSERT_EQ(halves[h].degree(), whole.degree());
+                for (int sample = 0; sample < 10; ++sample) {
+                    double l1 = unit(random), l2 = unit(random);
+                    if (l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;
+                    const double l0 = 1 - l1 - l2;
+                    const Point2 q = l0 * corners[0] + l1 * corners[1] + l2 * corners[2];
+                    const Point3 expected = patch.point(q.x(), q.y());
+                    EXPECT_LT((halves[h].point(l0, l1, l2) - expected).norm(),
+                              1e-10 * (1 + expected.norm()))
+                        << degreeU << " x " << degreeV << " side " << side << " half " << h;
+                }
+            }
+        }
+    }
+}
+
 TEST(TriangularBezierPatch, RefusesTooHighADegree) {
     std::mt19937 random(2);
     const BezierPatch patch = randomRationalPatch(random, 9, 9);
