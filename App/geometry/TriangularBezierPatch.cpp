@@ -12,7 +12,7 @@ namespace {
 using Row = std::array<HomogeneousPoint3, TriangularBezierPatch::kMostDegree + 1>;
 
 // One de Casteljau level at x over the first count points, in place (count - 1 left).
-void step(Row& points, int count, double x) {
+inline void step(Row& points, int count, double x) {
     for (int i = 0; i + 1 < count; ++i) points[i] = (1 - x) * points[i] + x * points[i + 1];
 }
 
