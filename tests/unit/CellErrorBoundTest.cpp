@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "CellSamples.hpp"
+#include "ParaboloidPatch.hpp"
 #include "geometry/BezierReparametrization.hpp"
 #include "geometry/SegmentDistance.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -656,15 +657,7 @@ TEST(CellErrorBound, EvenSpeedBoundIsNeverBelowAMeasuredDistance) {
     EXPECT_GT(tighter, checked / 4);  // the even speed does take most of them in
 }
 
-// The paraboloid S(s, t) = (s, t, s^2 + t^2) over the unit square, as a biquadratic patch.
-BezierPatch unitParaboloid() {
-    BezierPatch patch(2, 2);
-    const double square[3] = {0, 0, 1};  // s^2 in the Bernstein basis of degree 2
-    for (int i = 0; i <= 2; ++i)
-        for (int j = 0; j <= 2; ++j)
-            patch.pole(i, j) = HomogeneousPoint3(i / 2.0, j / 2.0, square[i] + square[j], 1);
-    return patch;
-}
+using testing::unitParaboloid;
 
 // A triangle's affine map leaves the surface fastest beyond the triangle: over the small
 // triangle (0, 0), (1/2, 0), (0, 1/2) of the paraboloid, with the map through its corners'

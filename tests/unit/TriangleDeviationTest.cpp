@@ -3,6 +3,7 @@
 #include <limits>
 #include <random>
 
+#include "ParaboloidPatch.hpp"
 #include "geometry/BSplineSurface.hpp"
 #include "geometry/BezierPatchGrid.hpp"
 #include "tessellate/CellErrorBound.hpp"
@@ -11,22 +12,14 @@
 namespace nurbslod {
 namespace {
 
-// z = s^2 + t^2 over the unit square
-BezierPatch paraboloid() {
-    BezierPatch patch(2, 2);
-    const double square[3] = {0, 0, 1};  // s^2 in the Bernstein basis of degree 2
-    for (int i = 0; i <= 2; ++i)
-        for (int j = 0; j <= 2; ++j)
-            patch.pole(i, j) = HomogeneousPoint3(i / 2.0, j / 2.0, square[i] + square[j], 1);
-    return patch;
-}
+using testing::unitParaboloid;
 
 // Over the triangle (0, 0), (1/2, 0), (0, 1/2) the paraboloid is 1/8 off the map through its
 // corners' points (at (1/4, 1/4)). The hull over the triangle is within twice that (0.15), and
 // its cuts close in on 1/8; the hull over the box [0, 1/2]^2 of the same map is larger (1/6),
 // since the map leaves the surface faster beyond the triangle.
 TEST(TriangleDeviation, ClosesInOnTheTrueDistance) {
-    const BezierPatch patch = paraboloid();
+    const BezierPatch patch = unitParaboloid();
     const std::array<Point2, 3> triangle{Point2(0, 0), Point2(0.5, 0), Point2(0, 0.5)};
     const std::array<Point3, 3> image{Point3(0, 0, 0), Point3(0.5, 0, 0.25), Point3(0, 0.5, 0.25)};
     const double hull = triangleDeviation(patch, triangle, image, 1.0, 0);

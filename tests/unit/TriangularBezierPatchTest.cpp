@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "RandomBezierPatch.hpp"
 #include "geometry/TriangularBezierPatch.hpp"
@@ -17,11 +18,27 @@ std::array<Point2, 3> randomTriangle(std::mt19937& random) {
     return triangle;
 }
 
+// At random barycentric coordinates the triangular patch's point is the tensor patch's at the
+// same point of `triangle`.
+void expectTensorPointsOver(const TriangularBezierPatch& over, const BezierPatch& patch,
+                            const std::array<Point2, 3>& triangle, std::mt19937& random,
+                            const std::string& what) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int sample = 0; sample < 10; ++sample) {
+        double l1 = unit(random), l2 = unit(random);
+        if (l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;
+        const double l0 = 1 - l1 - l2;
+        const Point2 q = l0 * triangle[0] + l1 * triangle[1] + l2 * triangle[2];
+        const Point3 expected = patch.point(q.x(), q.y());
+        EXPECT_LT((over.point(l0, l1, l2) - expected).norm(), 1e-10 * (1 + expected.norm()))
+            << what;
+    }
+}
+
 // The triangular patch is the tensor patch over the triangle, exactly: the same point at the
 // same barycentric coordinates, rational patches of unequal degrees included.
 TEST(TriangularBezierPatch, IsTheTensorPatchOverTheTriangle) {
     std::mt19937 random(5);
-    std::uniform_real_distribution<double> unit(0, 1);
     for (const auto& [degreeU, degreeV] :
          {std::pair{1, 1}, std::pair{2, 1}, std::pair{2, 2}, std::pair{3, 3}, std::pair{1, 8},
           std::pair{5, 5}, std::pair{8, 8}}) {
@@ -30,15 +47,8 @@ TEST(TriangularBezierPatch, IsTheTensorPatchOverTheTriangle) {
             const auto triangle = randomTriangle(random);
             const TriangularBezierPatch over(patch, triangle);
             ASSERT_EQ(over.degree(), degreeU + degreeV);
-            for (int sample = 0; sample < 20; ++sample) {
-                double l1 = unit(random), l2 = unit(random);
-                if (l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;
-                const double l0 = 1 - l1 - l2;
-                const Point2 q = l0 * triangle[0] + l1 * triangle[1] + l2 * triangle[2];
-                const Point3 expected = patch.point(q.x(), q.y());
-                EXPECT_LT((over.point(l0, l1, l2) - expected).norm(), 1e-10 * (1 + expected.norm()))
-                    << degreeU << " x " << degreeV << " trial " << trial;
-            }
+            expectTensorPointsOver(over, patch, triangle, random,
+                                   std::to_string(degreeU) + " x " + std::to_string(degreeV));
             // its corners are the patch's points at the triangle's corners
             const int n = over.degree();
             EXPECT_LT((projectHomogeneous(over.pole(n, 0)) -
@@ -61,7 +71,6 @@ TEST(TriangularBezierPatch, IsTheTensorPatchOverTheTriangle) {
 // that keeps corner k has the middle for corner k + 1, and the other the middle for corner k.
 TEST(TriangularBezierPatch, HalvesAreThePatchOverEachHalf) {
     std::mt19937 random(13);
-    std::uniform_real_distribution<double> unit(0, 1);
     for (const auto& [degreeU, degreeV] : {std::pair{1, 1}, std::pair{2, 2}, std::pair{5, 3}}) {
         const BezierPatch patch = randomRationalPatch(random, degreeU, degreeV);
         const auto triangle = randomTriangle(random);
@@ -76,16 +85,9 @@ TEST(TriangularBezierPatch, HalvesAreThePatchOverEachHalf) {
             for (int h = 0; h < 2; ++h) {
                 const auto& corners = h == 0 ? first : second;
                 ASSERT_EQ(halves[h].degree(), whole.degree());
-                for (int sample = 0; sample < 10; ++sample) {
-                    double l1 = unit(random), l2 = unit(random);
-                    if (l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;
-                    const double l0 = 1 - l1 - l2;
-                    const Point2 q = l0 * corners[0] + l1 * corners[1] + l2 * corners[2];
-                    const Point3 expected = patch.point(q.x(), q.y());
-                    EXPECT_LT((halves[h].point(l0, l1, l2) - expected).norm(),
-                              1e-10 * (1 + expected.norm()))
-                        << degreeU << " x " << degreeV << " side " << side << " half " << h;
-                }
+                expectTensorPointsOver(
+                    halves[h], patch, corners, random,
+                    "side " + std::to_string(side) + " half " + std::to_string(h));
             }
         }
     }
