@@ -22,6 +22,7 @@
 #include "tessellate/OpenBoundaryPoints.hpp"
 #include "tessellate/PolygonTriangulator.hpp"
 #include "tessellate/RectangleInRegion.hpp"
+#include "tessellate/TriangleAffineMap.hpp"
 #include "tessellate/TriangleDeviation.hpp"
 #include "tessellate/WindingRectangleClip.hpp"
 
@@ -720,16 +721,9 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
               q.y() <= domainV.back()))
             return kUnbounded;
     // the affine map through the corners: position = X0 + G (q - q0)
-    Eigen::Matrix2d across;
-    across << uv[1].x() - uv[0].x(), uv[2].x() - uv[0].x(), uv[1].y() - uv[0].y(),
-        uv[2].y() - uv[0].y();
-    const double determinant = across.determinant();
-    const double scale = across.cwiseAbs().maxCoeff();
-    if (!(std::abs(determinant) > 1e-12 * scale * scale)) return kUnbounded;
-    Eigen::Matrix<double, 3, 2> differences;
-    differences << position[1] - position[0], position[2] - position[0];
-    const Eigen::Matrix<double, 3, 2> gradient = differences * across.inverse();
-    auto affineAt = [&](const Point2& q) -> Point3 { return position[0] + gradient * (q - uv[0]); };
+    const auto map = TriangleAffineMap::through(uv, position);
+    if (!map) return kUnbounded;
+    const TriangleAffineMap& affineAt = *map;
     // The surface's distance from the triangle at its centre and at its sides' middles is a
     // lower bound of any bound: where it is over the target already, no piece is bounded (most
     // triangles that removeOpenBoundaryPoints tries on a strip of thin cells are far over it).
@@ -743,7 +737,7 @@ double FaceTessellator::triangleBound(const std::array<Point2, 3>& uv,
         }
     if (!(seen <= target)) return seen;
     // over the triangle itself where the surface's degrees allow (far closer than over its box)
-    if (const auto deviation = triangleDeviation(*patches_, uv, position, target, kMostSpansInCell))
+    if (const auto deviation = triangleDeviation(*patches_, uv, affineAt, target, kMostSpansInCell))
         return *deviation;
     // the box of the corners, a step beyond each side (the frame's rounding), cut at span borders
     const Point2 low = uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);

@@ -1,6 +1,5 @@
 #include "tessellate/TriangleDeviation.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -39,10 +38,6 @@ std::vector<Point2> clipToBox(std::vector<Point2> polygon, const Point2& low, co
     return polygon;
 }
 
-}  // namespace
-
-namespace {
-
 // The bound over `part` against the flat triangle `image`, halved at its longest side (in
 // space) while over the target, `halvings` times at most.
 double boundOver(const TriangularBezierPatch& part, const std::array<Point3, 3>& image,
@@ -77,23 +72,10 @@ double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& 
 
 std::optional<double> triangleDeviation(const BezierPatchGrid& patches,
                                         const std::array<Point2, 3>& uv,
-                                        const std::array<Point3, 3>& image, double target,
+                                        const TriangleAffineMap& affineAt, double target,
                                         std::size_t mostPieces) {
     const BezierPatch& first = patches.patch(0, 0);
     if (first.degreeU() + first.degreeV() > TriangularBezierPatch::kMostDegree) return std::nullopt;
-    // the affine map through the corners: image = X0 + G (q - q0)
-    Eigen::Matrix2d across;
-    across << uv[1].x() - uv[0].x(), uv[2].x() - uv[0].x(), uv[1].y() - uv[0].y(),
-        uv[2].y() - uv[0].y();
-    const double determinant = across.determinant();
-    const double scale = across.cwiseAbs().maxCoeff();
-    if (!(std::abs(determinant) > 1e-12 * scale * scale))
-        return std::numeric_limits<double>::infinity();
-    Eigen::Matrix<double, 3, 2> differences;
-    differences << image[1] - image[0], image[2] - image[0];
-    const Eigen::Matrix<double, 3, 2> gradient = differences * across.inverse();
-    auto affineAt = [&](const Point2& q) -> Point3 { return image[0] + gradient * (q - uv[0]); };
-
     const Point2 low = uv[0].cwiseMin(uv[1]).cwiseMin(uv[2]);
     const Point2 high = uv[0].cwiseMax(uv[1]).cwiseMax(uv[2]);
     const int u0 = patches.spanIndexU(low.x()), u1 = patches.spanIndexU(high.x());
@@ -104,7 +86,7 @@ std::optional<double> triangleDeviation(const BezierPatchGrid& patches,
     const auto& breaksV = patches.breakpointsV();
     // pieces thinner than this share of the triangle's area hold no surface worth a bound of
     // their own (their sides are bounded with their neighbours')
-    const double leastArea = 1e-12 * std::abs(determinant);
+    const double leastArea = 1e-12 * affineAt.doubleArea();
     double bound = 0;
     for (int su = u0; su <= u1; ++su)
         for (int sv = v0; sv <= v1; ++sv) {

@@ -6,6 +6,7 @@
 
 #include "geometry/BezierPatch.hpp"
 #include "geometry/BezierPatchGrid.hpp"
+#include "tessellate/TriangleAffineMap.hpp"
 
 namespace nurbslod {
 
@@ -19,13 +20,13 @@ namespace nurbslod {
 double triangleDeviation(const BezierPatch& patch, const std::array<Point2, 3>& corner,
                          const std::array<Point3, 3>& image, double target, int halvings = 6);
 
-// The same for a triangle of a B-spline surface's parameters (inside its domain): the triangle
-// cut at the spans' borders, each convex piece fanned into triangles bounded on their own span's
-// patch, against the affine map of the whole triangle. Nothing where the surface's degrees are
-// too high or the triangle crosses more than `mostPieces` span pairs.
+// The same for a triangle of a B-spline surface's parameters (inside its domain) against the
+// affine map of its corners' positions (`affineAt`): the triangle cut at the spans' borders,
+// each convex piece fanned into triangles bounded on their own span's patch. Nothing where the
+// surface's degrees are too high or the triangle crosses more than `mostPieces` span pairs.
 std::optional<double> triangleDeviation(const BezierPatchGrid& patches,
                                         const std::array<Point2, 3>& uv,
-                                        const std::array<Point3, 3>& image, double target,
+                                        const TriangleAffineMap& affineAt, double target,
                                         std::size_t mostPieces);
 
 }  // namespace nurbslod

@@ -74,11 +74,12 @@ TEST(TriangleDeviation, HoldsAcrossSpans) {
                                              (l0 * image[0] + l1 * image[1] + l2 * image[2]))
                                                 .norm());
             }
-        const auto loose =
-            triangleDeviation(grid, uv, image, std::numeric_limits<double>::infinity(), 64);
+        const auto loose = triangleDeviation(grid, uv, *TriangleAffineMap::through(uv, image),
+                                             std::numeric_limits<double>::infinity(), 64);
         ASSERT_TRUE(loose.has_value());
         EXPECT_GE(*loose, sampled * (1 - 1e-9));
-        const auto close = triangleDeviation(grid, uv, image, 1.1 * sampled, 64);
+        const auto close =
+            triangleDeviation(grid, uv, *TriangleAffineMap::through(uv, image), 1.1 * sampled, 64);
         ASSERT_TRUE(close.has_value());
         EXPECT_GE(*close, sampled * (1 - 1e-9));
         ++tried;
@@ -87,9 +88,10 @@ TEST(TriangleDeviation, HoldsAcrossSpans) {
     EXPECT_GE(certified, tried * 9 / 10);
     // more span pairs than allowed: no answer
     const std::array<Point2, 3> wide{Point2(0, 0), Point2(1, 0), Point2(0, 1)};
-    EXPECT_FALSE(
-        triangleDeviation(grid, wide, {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)}, 1.0, 4)
-            .has_value());
+    const auto flat =
+        TriangleAffineMap::through(wide, {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)});
+    ASSERT_TRUE(flat.has_value());
+    EXPECT_FALSE(triangleDeviation(grid, wide, *flat, 1.0, 4).has_value());
 }
 
 }  // namespace
