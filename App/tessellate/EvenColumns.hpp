@@ -73,8 +73,9 @@ public:
     // as whole cells
     bool settles(std::int64_t x0, std::int64_t x1) const;
     // The rows the kd-tree cuts the column [x0, x1] into across, over every span across, where
-    // each settles (it halves a cell across while its bound says so, at most kRowDepth times);
-    // -1 where a row does not.
+    // each settles: it cuts a cell across on the other axis's even lines while the cell holds
+    // two of them or more (the grid's columns, as set when the test was made), then halves it
+    // while its bound says so, at most kRowDepth times; -1 where a row does not.
     int rowCount(std::int64_t x0, std::int64_t x1) const;
     // the bound of the first span across over the whole interval [a, b], over the target
     double wholeRatio(std::int64_t a, std::int64_t b) const;
@@ -102,7 +103,7 @@ private:
     struct Verdict;
     BezierPatch cellPiece(double c0, double c1, double o0, double o1) const;
     Verdict cellVerdict(double c0, double c1, double o0, double o1) const;
-    int rowsOf(double c0, double c1, double o0, double o1, int depth) const;
+    int rowsOf(double c0, double c1, std::int64_t y0, std::int64_t y1, int depth) const;
     // the greedy columns, none where more than `most`
     std::vector<std::int64_t> greedyLines(std::int64_t a, std::int64_t b, int most) const;
 
