@@ -55,11 +55,14 @@ TEST(FarFromOrigin, SphereFarAwayMeshesAsAtTheOriginAndPasses) {
             options.tolerance = relative * model.boundingBoxDiagonal;
             const TessellationResult result = tessellateModel(model, options);
             ASSERT_TRUE(result.failures.empty()) << x << " relative " << relative;
-            // the origin's mesh, within the little that rounding takes off the tolerance
+            // the origin's mesh, within the little that rounding takes off the tolerance: the
+            // sphere's count of columns cut across sits near the share of its power of two that
+            // it may take (kRowColumnsShare), and 0.02% less tolerance at the origin takes 2,880
+            // triangles instead of 2,814 at 1e-3 (at 0.02424 instead of 0.024245)
             options.tolerance = relative * near.boundingBoxDiagonal;
             const std::size_t nearTriangles = tessellateModel(near, options).mesh.triangles.size();
             EXPECT_NEAR(double(result.mesh.triangles.size()), double(nearTriangles),
-                        0.02 * double(nearTriangles))
+                        0.03 * double(nearTriangles))
                 << x << " relative " << relative;
             // (measuring 34,000 triangles at 1e-4 takes 20 s: the counts say enough there)
             if (relative < 1e-3) continue;
