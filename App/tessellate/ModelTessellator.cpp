@@ -46,7 +46,8 @@ namespace {
 // alone), onto `out`: a key for what the lines decide.
 template <class Number>
 void appendColumnLines(std::vector<Number>& out, const KdTreeGrid& grid) {
-    for (std::size_t i = 0; i + 1 < grid.intervals().size(); ++i) {
+    const std::size_t intervals = grid.intervals().size() - 1;
+    for (std::size_t i = 0; i < intervals; ++i) {
         out.push_back(Number(-1));
         for (const std::int64_t line : grid.columnLines(i)) out.push_back(Number(line));
     }
@@ -871,6 +872,8 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     // lines together, less each line whose two columns, merged, settle on every member (each
     // member's own lines settle on it, and a column within a settled one settles too). Returns
     // its faces.
+    // whether face f's columns may be cut across into rows (evenColumnLines' cutAcross)
+    auto mayCutAcross = [&](int f) { return options.evenColumnsCutAcross && !hasFreeEdge(f); };
     auto assignColumns = [&](const std::vector<int>& nodes) {
         std::set<int> faces;
         for (const int node : nodes) faces.insert(node / 2);
@@ -940,8 +943,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
                 lines[k] = evenColumnLines(
                     model.faces[f], *faceLines[f].forColumns(), nodes[k] % 2,
                     faceBudgets[f].surface, options.mode, options.flatCellsByDistance,
-                    options.evenColumnsCutAcross && !hasFreeEdge(f), options.gradedColumns,
-                    chords[k], surfaceCache.patches(f));
+                    mayCutAcross(f), options.gradedColumns, chords[k], surfaceCache.patches(f));
             } catch (const std::exception&) {
                 // no columns: the face's own tessellation then says what is wrong with it
                 lines[k].assign(intervals.size() - 1, {});
@@ -1011,7 +1013,7 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
         for (const int node : nodes) {
             const auto& other = faceLines[node / 2].axes[1 - node % 2];
             // only columns cut across into rows are tested on them
-            if (!options.evenColumnsCutAcross || hasFreeEdge(node / 2) || !other ||
+            if (!mayCutAcross(node / 2) || !other ||
                 other->intervals().size() - 1 > kMostSpansCutAcross)
                 continue;
             appendColumnLines(lines, *other);
