@@ -105,7 +105,7 @@ private:
     ClipperLib::Paths regionOf(const std::vector<BoundaryLoop>& loops) const;
     // oneSimpleRing: the region is one ring that visits no point twice (the one-pass clip's
     // case, simpleRingPiece)
-    // decisions: what the bounds said of filled cells, kept by one build for the next
+    // decisions: what the bounds said of the cells, kept by one build for the next
     struct CellDecisions;
     void buildKdTree(const ClipperLib::Paths& region, bool oneSimpleRing, CellDecisions& decisions);
     // The bound of a cell across span borders (breaksX, breaksY inside it) as one cell
