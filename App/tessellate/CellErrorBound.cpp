@@ -760,29 +760,39 @@ double farthestNetPointAt(const BezierPatch& patch, int direction) {
 }
 
 int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
-                           bool byDistance, double pieceFraction, ErrorMode mode) {
-    if (centreDeviation(patch) > 4 * target) return preferred;
-    auto halves = [&](int direction) {
+                           bool byDistance, double pieceFraction, ErrorMode mode,
+                           HalfBounds* halves, bool centreWithinTarget) {
+    if (!centreWithinTarget && centreDeviation(patch) > 4 * target) return preferred;
+    auto halvesOf = [&](int direction) {
         return direction == 0
                    ? std::array{patch.restricted(0, 0.5, 0, 1), patch.restricted(0.5, 1, 0, 1)}
                    : std::array{patch.restricted(0, 1, 0, 0.5), patch.restricted(0, 1, 0.5, 1)};
     };
+    HalfBounds measured[2];  // by direction
     // as the kd-tree would find it of the half (a centre beyond the target is not bounded; in
     // approximate mode, whose kd-tree measures such a cell, the half counts as unsettled too,
     // which only keeps the preferred direction more often)
-    auto settles = [&](const BezierPatch& half) {
-        return !centreBeyond(half, target) &&
-               cellErrorBound(half, mode, target, trimmedCell, byDistance, pieceFraction)
-                       .measure(mode, trimmedCell) <= target;
+    auto settles = [&](const std::array<BezierPatch, 2>& pair, int direction, int k) {
+        if (centreBeyond(pair[k], target)) return false;
+        return measured[direction][k]
+                   .emplace(cellErrorBound(pair[k], mode, target, trimmedCell, byDistance,
+                                           pieceFraction))
+                   .measure(mode, trimmedCell) <= target;
+    };
+    auto chosen = [&](int direction) {
+        if (halves) *halves = std::move(measured[direction]);
+        return direction;
     };
     // the other halving's centres first: most cells fail there, before any bound is computed
     const int other = 1 - preferred;
-    const auto otherHalves = halves(other);
+    const auto otherHalves = halvesOf(other);
     if (centreBeyond(otherHalves[0], target) || centreBeyond(otherHalves[1], target))
         return preferred;
-    const auto preferredHalves = halves(preferred);
-    if (settles(preferredHalves[0]) && settles(preferredHalves[1])) return preferred;
-    return settles(otherHalves[0]) && settles(otherHalves[1]) ? other : preferred;
+    const auto preferredHalves = halvesOf(preferred);
+    if (settles(preferredHalves, preferred, 0) && settles(preferredHalves, preferred, 1))
+        return chosen(preferred);
+    return settles(otherHalves, other, 0) && settles(otherHalves, other, 1) ? chosen(other)
+                                                                            : chosen(preferred);
 }
 
 }  // namespace nurbslod

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "geometry/BezierPatch.hpp"
@@ -220,7 +221,14 @@ double farthestNetPointAt(const BezierPatch& patch, int direction);
 // within 4 target at the centre are tried: halving a side quarters the bilinear deviation (the
 // bound of section 5.2 falls with the square of the side), so the halves of a cell farther off
 // hardly settle, and the test costs four patch restrictions and up to four bounds.
+// `halves`, where given, takes the bounds it measured of the two halves in the direction it
+// returns (patch.restricted(0, 0.5, 0, 1) and (0.5, 1, 0, 1) along u), each where measured: the
+// kd-tree's children of a cut through the middle are those halves, and need not be bounded again.
+// `centreWithinTarget`: the caller found centreBeyond(patch, target) false (the centre is then
+// within 4 target, and is not sampled again).
+using HalfBounds = std::array<std::optional<CellErrorBound>, 2>;
 int settlingSplitDirection(const BezierPatch& patch, int preferred, double target, bool trimmedCell,
-                           bool byDistance, double pieceFraction, ErrorMode mode);
+                           bool byDistance, double pieceFraction, ErrorMode mode,
+                           HalfBounds* halves = nullptr, bool centreWithinTarget = false);
 
 }  // namespace nurbslod

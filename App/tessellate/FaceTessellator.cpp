@@ -891,6 +891,13 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         std::shared_ptr<const BezierPatch> parentPiece = nullptr;
         Rect parentRect{};
         bool simpleRing = false;  // the region's piece is known to be one simple ring
+        // The bound of this cell as a half of its parent (settlingSplitDirection measured it),
+        // with the target, trimmed-ness and piece fraction it was measured for: taken where the
+        // cell has the same, the piece being the same de Casteljau pass of the same parent.
+        std::optional<CellErrorBound> halfBound = std::nullopt;
+        double halfTarget = 0;
+        bool halfTrimmed = false;
+        double halfFraction = 0;
     };
     std::vector<Node> stack;
     // the split through iso-run points below, for the faces that take it
@@ -984,6 +991,9 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // this cell's piece once bounded, handed to its children where it is the surface over
         // the whole cell
         std::shared_ptr<const BezierPatch> ownPiece, childrenPiece;
+        // the halves' bounds that settlingSplitDirection measured, for its direction
+        HalfBounds halves;
+        int halvesDirection = -1;
         auto split = [&](int direction, cInt at) {
             Rect a = r, b = r;
             if (direction == 0)
@@ -1091,6 +1101,8 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         double widestBand = kWidestBand;
         // the cell's bound where it was measured
         double measured = kUnmeasured;
+        // whether centreBeyond found the centre within the target
+        bool centreWithinTarget = false;
         if (decided) {
             if (known->second.settles) {
                 settle(known->second.bound);
@@ -1103,8 +1115,13 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             preferredDirection = preferredSplitDirection(piece);
             record(false, preferredDirection);
         } else {
-            const CellErrorBound bound = cellErrorBound(
-                piece, mode_, target, trimmedCell, choices_.flatCellsByDistance, pieceFraction);
+            centreWithinTarget = mode_ == ErrorMode::Guaranteed;
+            const CellErrorBound bound =
+                node.halfBound && node.halfTarget == target && node.halfTrimmed == trimmedCell &&
+                        node.halfFraction == pieceFraction
+                    ? *node.halfBound
+                    : cellErrorBound(piece, mode_, target, trimmedCell,
+                                     choices_.flatCellsByDistance, pieceFraction);
             // a trimmed cell's bound for corners on its sides, measured (not the plain sum
             // interior + boundary that `bound` takes), once for the checks below that need it
             std::optional<CellErrorBound> sides;
@@ -1162,9 +1179,10 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // command line's meshes; the display's keep the paper's cut). The second build (even
         // columns) reads the direction from the decisions.
         if (choices_.middleSplits && canU && canV && !decided) {
-            preferredDirection =
-                settlingSplitDirection(piece, preferredDirection, target, trimmedCell,
-                                       choices_.flatCellsByDistance, pieceFraction, mode_);
+            preferredDirection = settlingSplitDirection(
+                piece, preferredDirection, target, trimmedCell, choices_.flatCellsByDistance,
+                pieceFraction, mode_, &halves, centreWithinTarget);
+            halvesDirection = preferredDirection;
             if (decisions.record) decisions.byRect[key].preferredDirection = preferredDirection;
         }
         // A middle cut that meets a free chord leaves a point on it: an open edge, which stays
@@ -1245,6 +1263,15 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
         // than the points saved (wing.brep at 1e-4: 6,529 -> 7,536 triangles).
         if (where == at && !even && throughIsoRuns) where = isoRuns.nearest(direction, lo, hi, at);
         split(direction, where);
+        // a cut through the middle of a cell whose children's pieces are its own halves
+        if (direction == halvesDirection && 2 * where == lo + hi && childrenPiece)
+            for (int k = 0; k < 2; ++k) {
+                Node& child = stack[stack.size() - 1 - k];  // the lower half on top
+                child.halfBound = std::move(halves[k]);
+                child.halfTarget = target;
+                child.halfTrimmed = trimmedCell;
+                child.halfFraction = pieceFraction;
+            }
     }
 }
 
