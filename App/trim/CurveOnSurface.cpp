@@ -79,22 +79,22 @@ Point3 CurvePoints::operator()(double s) {
     if (std::isnan(s)) return curve_->point(s);
     // 0 and -0 compare equal: one key
     const std::uint64_t key = std::bit_cast<std::uint64_t>(s == 0 ? 0.0 : s);
-    if (2 * (used_ + 1) > slots_.size()) grow();
+    if (2 * (points_.size() + 1) > slots_.size()) grow();
     const std::size_t mask = slots_.size() - 1;
     std::size_t at = mixBits(key) & mask;
     while (slots_[at].key != kEmpty) {
-        if (slots_[at].key == key) return slots_[at].point;
+        if (slots_[at].key == key) return points_[slots_[at].index];
         at = (at + 1) & mask;
     }
-    slots_[at] = {key, curve_->point(s)};
-    ++used_;
+    slots_[at] = {key, static_cast<std::uint32_t>(points_.size())};
+    points_.push_back(curve_->point(s));
     if (evaluations_) ++*evaluations_;
-    return slots_[at].point;
+    return points_.back();
 }
 
 void CurvePoints::grow() {
     std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{kEmpty, Point3::Zero()});
+    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{kEmpty, 0});
     const std::size_t mask = slots_.size() - 1;
     for (const Slot& slot : old) {
         if (slot.key == kEmpty) continue;
