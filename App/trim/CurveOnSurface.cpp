@@ -86,8 +86,10 @@ Point3 CurvePoints::operator()(double s) {
         if (slots_[at].key == key) return points_[slots_[at].index];
         at = (at + 1) & mask;
     }
+    // evaluated first: a point that throws leaves no slot behind
+    const Point3 point = curve_->point(s);
     slots_[at] = {key, static_cast<std::uint32_t>(points_.size())};
-    points_.push_back(curve_->point(s));
+    points_.push_back(point);
     if (evaluations_) ++*evaluations_;
     return points_.back();
 }
