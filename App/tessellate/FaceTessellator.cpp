@@ -1035,9 +1035,12 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
             known = decisions.byRect.end();
         // kept as a flag: the decisions recorded below may rehash the map, and `known` with it
         const bool decided = known != decisions.byRect.end();
-        // this cell's decision, recorded in the first build
+        // this cell's decision, recorded in the first build, and kept at hand for what the
+        // checks below add to it (a rehash moves no element of the map)
+        CellDecisions::Decision* recorded = nullptr;
         auto record = [&](bool settles, int direction, double bound = 0) {
-            if (decisions.record) decisions.byRect[key] = {node.full, settles, direction, bound};
+            if (decisions.record)
+                recorded = &(decisions.byRect[key] = {node.full, settles, direction, bound});
         };
         // a leaf, within `bound` of the surface where its bound was measured
         auto settle = [&](double bound) {
@@ -1164,9 +1167,9 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                  ? kWidestBand
                                  : kThinBand;
             }
-            if (decisions.record) {
-                decisions.byRect[key].sidesWouldDo = sidesWouldDo;
-                decisions.byRect[key].widestBand = widestBand;
+            if (recorded) {
+                recorded->sidesWouldDo = sidesWouldDo;
+                recorded->widestBand = widestBand;
             }
         }
         const bool canU = r.x1 - r.x0 >= 2, canV = r.y1 - r.y0 >= 2;
@@ -1183,7 +1186,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                 piece, preferredDirection, target, trimmedCell, choices_.flatCellsByDistance,
                 pieceFraction, mode_, &halves, centreWithinTarget);
             halvesDirection = preferredDirection;
-            if (decisions.record) decisions.byRect[key].preferredDirection = preferredDirection;
+            if (recorded) recorded->preferredDirection = preferredDirection;
         }
         // A middle cut that meets a free chord leaves a point on it: an open edge, which stays
         // where the removal cannot drop it (removeOpenBoundaryPoints), and always where the
@@ -1214,7 +1217,7 @@ void FaceTessellator::buildKdTree(const Paths& region, bool oneSimpleRing,
                                                 .measure(mode_, trimmedCell));
                 }
                 if (worst <= kAlongFreeChordGain * measured) preferredDirection = other;
-                if (decisions.record) decisions.byRect[key].preferredDirection = preferredDirection;
+                if (recorded) recorded->preferredDirection = preferredDirection;
             }
         }
         // each axis's even columns' middle line where the cell holds two or more (the lines its
