@@ -124,14 +124,14 @@ private:
 // whole box, and `graded`, graded ones (ColumnTest::gradedLines, each leaving the edges `chords`
 // one chord) where they are fewer than equal ones. The interval's two borders where it needs no
 // cut; none where no count up to 256 does. Where a column would need cuts across it too, and
-// `cutAcross`, the fewest equal ones (up to 64) whose cells meet it once the kd-tree has cut them
-// across into rows, taken only where that count is well under the power of two the halvings give
-// the neediest rows (kRowColumnsShare): the need of such columns differs from row to row (a torus's
-// columns near its axis need fewer than at its rim), and the kd-tree's halvings follow that where
-// equal columns cannot (bottle.brep at relative 1e-4: a torus with equal columns everywhere took
-// 2,037 triangles instead of 1,758, and the cylinder sharing its circle 434 instead of 282). Faces
-// that share an edge along the axis take lines that settle on each of them (ModelTessellator),
-// so that their kd-trees cut it on the same lines.
+// `cutAcross`, the fewest equal ones (up to 64; 128 over one span across) whose cells meet it once
+// the kd-tree has cut them across into rows, taken only where that count is well under the power
+// of two the halvings give the neediest rows (kRowColumnsShare): the need of such columns differs
+// from row to row (a torus's columns near its axis need fewer than at its rim), and the kd-tree's
+// halvings follow that where equal columns cannot (bottle.brep at relative 1e-4: a torus with equal
+// columns everywhere took 2,037 triangles instead of 1,758, and the cylinder sharing its circle 434
+// instead of 282). Faces that share an edge along the axis take lines that settle on each of them
+// (ModelTessellator), so that their kd-trees cut it on the same lines.
 std::vector<std::vector<std::int64_t>> evenColumnLines(
     const TrimmedSurface& face, const std::array<KdTreeGrid, 2>& grids, int axis, double target,
     ErrorMode mode, bool flatCellsByDistance, bool cutAcross, bool graded = true,
