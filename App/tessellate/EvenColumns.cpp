@@ -378,7 +378,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(
     // 2P, and the search goes on there. Over the 7 corpus files and the 25 generated shapes at
     // relative 1e-3 and 1e-4 these searches took 0.29 s of 2.6 s of tessellation (0.48 s when
     // the five were checked before the count was searched and every cell's bound was made).
-    const bool oneSpanAcross = grids[1 - axis].intervals().size() == 2;
+    const std::size_t spansAcross = grids[1 - axis].intervals().size() - 1;
     auto columnsCutAcross = [&](std::int64_t a, std::int64_t b) {
         // (k, c): the rows of column c of k, -1 where one fails
         std::map<std::pair<int, int>, int> rowsTested;
@@ -397,7 +397,8 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(
         auto spreadMeet = [&](int k) { return meets(k, {k / 2, 0, k / 4, 3 * k / 4, k - 1}); };
         // where halvings need at most 4 columns, equal ones save at most one
         if (meets(4, {2})) return 0;
-        const int mostPower = oneSpanAcross ? kMostColumnsCutAcrossOneSpan : kMostColumnsCutAcross;
+        const int mostPower =
+            spansAcross == 1 ? kMostColumnsCutAcrossOneSpan : kMostColumnsCutAcross;
         auto shareOf = [](int power) {
             return power > kMostColumnsCutAcross ? kOneSpanRowColumnsShare : kRowColumnsShare;
         };
@@ -431,7 +432,7 @@ std::vector<std::vector<std::int64_t>> evenColumnLines(
     // shapes, OpenCASCADE's other samples and 21 FreeCAD shapes but Motor-c.brep at 1e-4
     // (30,492 -> 30,500); with 8 spans the pipe along a spline and Bottom.brep changed too
     // (-2.6% and +0.2%).
-    cutAcross = cutAcross && grids[1 - axis].intervals().size() - 1 <= kMostSpansCutAcross;
+    cutAcross = cutAcross && spansAcross <= kMostSpansCutAcross;
     for (std::size_t i = 0; i + 1 < intervals.size(); ++i) {
         const std::int64_t a = intervals[i], b = intervals[i + 1];
         if (columnSettles(a, b, 1, 0)) {
