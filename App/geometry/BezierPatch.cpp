@@ -2,7 +2,17 @@
 
 #include <type_traits>
 
+#include "geometry/BasisFunctions.hpp"
+
 namespace nurbslod {
+
+namespace {
+
+// The degrees point() sums on the stack: a surface's (kMaxDegree) and its difference patch's
+// one more (CellErrorBound's degree elevation).
+constexpr int kMostPointDegree = kMaxDegree + 1;
+
+}  // namespace
 
 BezierPatch::BezierPatch(int degreeU, int degreeV)
     : degreeU_(degreeU),
@@ -50,18 +60,24 @@ void splitInHalves(HomogeneousPoint3* pts, HomogeneousPoint3* right, int degree,
 
 }  // namespace
 
-std::array<BezierPatch, 4> BezierPatch::quarters() const {
+std::array<BezierPatch, 2> BezierPatch::halves(int direction) const {
+    std::array<BezierPatch, 2> out{*this, *this};
     const int stride = degreeV_ + 1;
-    // u first, as restricted() cuts: the halves along u, then each half along v
-    BezierPatch lowU = *this, highU = *this;
-    for (int j = 0; j <= degreeV_; ++j)
-        splitInHalves(&lowU.poles_[j], &highU.poles_[j], degreeU_, stride);
-    std::array<BezierPatch, 4> out{lowU, lowU, highU, highU};
-    for (int half = 0; half < 2; ++half)
+    if (direction == 0) {
+        for (int j = 0; j <= degreeV_; ++j)
+            splitInHalves(&out[0].poles_[j], &out[1].poles_[j], degreeU_, stride);
+    } else {
         for (int i = 0; i <= degreeU_; ++i)
-            splitInHalves(&out[2 * half].poles_[i * stride], &out[2 * half + 1].poles_[i * stride],
-                          degreeV_, 1);
+            splitInHalves(&out[0].poles_[i * stride], &out[1].poles_[i * stride], degreeV_, 1);
+    }
     return out;
+}
+
+std::array<BezierPatch, 4> BezierPatch::quarters() const {
+    // u first, as restricted() cuts: the halves along u, then each half along v
+    const auto alongU = halves(0);
+    auto low = alongU[0].halves(1), high = alongU[1].halves(1);
+    return {std::move(low[0]), std::move(low[1]), std::move(high[0]), std::move(high[1])};
 }
 
 void restrictBezierCurve(HomogeneousPoint3* pts, int degree, int stride, double a, double b,
@@ -89,18 +105,6 @@ BezierPatch BezierPatch::restricted(double u0, double u1, double v0, double v1) 
     return out;
 }
 
-Point3 BezierPatch::point(double s, double t) const {
-    std::vector<HomogeneousPoint3> column(degreeU_ + 1);
-    std::vector<HomogeneousPoint3> row(degreeV_ + 1);
-    for (int i = 0; i <= degreeU_; ++i) {
-        for (int j = 0; j <= degreeV_; ++j) row[j] = pole(i, j);
-        keepLeft(row.data(), degreeV_, 1, t);
-        column[i] = row[degreeV_];
-    }
-    keepLeft(column.data(), degreeU_, 1, s);
-    return projectHomogeneous(column[degreeU_]);
-}
-
 namespace {
 
 // Bernstein polynomials B_{k,degree}(s), k = 0..degree, by the recurrence
@@ -115,6 +119,24 @@ void bernstein(int degree, double s, double* values) {
 }
 
 }  // namespace
+
+Point3 BezierPatch::point(double s, double t) const {
+    // (m + 1)(n + 1) products of poles by Bernstein values, where de Casteljau takes
+    // (m + 1) n^2 / 2 blends (and two buffers): the kd-tree's centre tests evaluate a patch of
+    // degree 8 x 11 at one point each (trj7_b1-ec-214.stp's domes)
+    if (degreeU_ > kMostPointDegree || degreeV_ > kMostPointDegree)
+        return gridPointsAt({s}, {t}).front();
+    double basisU[kMostPointDegree + 1], basisV[kMostPointDegree + 1];
+    bernstein(degreeU_, s, basisU);
+    bernstein(degreeV_, t, basisV);
+    HomogeneousPoint3 sum = HomogeneousPoint3::Zero();
+    for (int i = 0; i <= degreeU_; ++i) {
+        HomogeneousPoint3 row = HomogeneousPoint3::Zero();
+        for (int j = 0; j <= degreeV_; ++j) row += basisV[j] * pole(i, j);
+        sum += basisU[i] * row;
+    }
+    return projectHomogeneous(sum);
+}
 
 std::vector<Point3> BezierPatch::gridPoints(int segmentsU, int segmentsV) const {
     std::vector<double> us(static_cast<size_t>(segmentsU + 1)),

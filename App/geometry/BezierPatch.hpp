@@ -24,12 +24,16 @@ public:
     // subdivision: an exact reparameterisation, so its control net bounds that piece.
     BezierPatch restricted(double u0, double u1, double v0, double v1) const;
 
+    // The halves [0, 1/2] and [1/2, 1] along u (direction 0) or v (1), the same numbers as
+    // restricted() gives each, from one de Casteljau triangle per curve.
+    std::array<BezierPatch, 2> halves(int direction) const;
+
     // The four quarters [0, 1/2] x [0, 1/2], [0, 1/2] x [1/2, 1], [1/2, 1] x [0, 1/2] and
     // [1/2, 1] x [1/2, 1], the same numbers as restricted() gives each: one de Casteljau
     // triangle yields both halves, so three passes do what four restrictions do in eight.
     std::array<BezierPatch, 4> quarters() const;
 
-    // Point at local parameters (s, t), by de Casteljau.
+    // Point at local parameters (s, t): the Bernstein sum over the poles.
     Point3 point(double s, double t) const;
 
     // Points at the local parameters (i / segmentsU, j / segmentsV), i = 0..segmentsU,

@@ -763,11 +763,6 @@ int settlingSplitDirection(const BezierPatch& patch, int preferred, double targe
                            bool byDistance, double pieceFraction, ErrorMode mode,
                            HalfBounds* halves, bool centreWithinTarget) {
     if (!centreWithinTarget && centreDeviation(patch) > 4 * target) return preferred;
-    auto halvesOf = [&](int direction) {
-        return direction == 0
-                   ? std::array{patch.restricted(0, 0.5, 0, 1), patch.restricted(0.5, 1, 0, 1)}
-                   : std::array{patch.restricted(0, 1, 0, 0.5), patch.restricted(0, 1, 0.5, 1)};
-    };
     HalfBounds measured[2];  // by direction
     // as the kd-tree would find it of the half (a centre beyond the target is not bounded; in
     // approximate mode, whose kd-tree measures such a cell, the half counts as unsettled too,
@@ -785,10 +780,10 @@ int settlingSplitDirection(const BezierPatch& patch, int preferred, double targe
     };
     // the other halving's centres first: most cells fail there, before any bound is computed
     const int other = 1 - preferred;
-    const auto otherHalves = halvesOf(other);
+    const auto otherHalves = patch.halves(other);
     if (centreBeyond(otherHalves[0], target) || centreBeyond(otherHalves[1], target))
         return preferred;
-    const auto preferredHalves = halvesOf(preferred);
+    const auto preferredHalves = patch.halves(preferred);
     if (settles(preferredHalves, preferred, 0) && settles(preferredHalves, preferred, 1))
         return chosen(preferred);
     return settles(otherHalves, other, 0) && settles(otherHalves, other, 1) ? chosen(other)
