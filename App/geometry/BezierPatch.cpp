@@ -45,16 +45,20 @@ void keepRight(HomogeneousPoint3* pts, int degree, int stride, double t, Width w
 }
 
 // Both halves at 1/2 from one de Casteljau triangle: the left half into pts, the right half
-// into right (same stride). Each triangle value is (1 - t) left + t right of the level above,
-// the expression of keepLeft and keepRight, so the halves are theirs to the last bit.
-void splitInHalves(HomogeneousPoint3* pts, HomogeneousPoint3* right, int degree, int stride) {
+// into right (same stride), which holds a copy of pts on entry. Each triangle value is (1 - t)
+// left + t right of the level above, the expression of keepLeft and keepRight, so the halves
+// are theirs to the last bit. `width` curves side by side, as keepLeft takes them.
+template <class Width = std::integral_constant<int, 1>>
+void splitInHalves(HomogeneousPoint3* pts, HomogeneousPoint3* right, int degree, int stride,
+                   Width width = {}) {
     constexpr double t = 0.5;
-    // keepRight on a copy in `right`, taking the left half's points off its first slot
-    for (int i = 0; i <= degree; ++i) right[i * stride] = pts[i * stride];
+    // keepRight in `right`, taking the left half's points off its first slot
     for (int level = 1; level <= degree; ++level) {
-        for (int i = 0; i <= degree - level; ++i)
-            right[i * stride] = (1 - t) * right[i * stride] + t * right[(i + 1) * stride];
-        pts[level * stride] = right[0];
+        for (int i = 0; i <= degree - level; ++i) {
+            HomogeneousPoint3 *to = right + i * stride, *after = right + (i + 1) * stride;
+            for (int w = 0; w < width; ++w) to[w] = (1 - t) * to[w] + t * after[w];
+        }
+        for (int w = 0; w < width; ++w) pts[level * stride + w] = right[w];
     }
 }
 
@@ -64,8 +68,8 @@ std::array<BezierPatch, 2> BezierPatch::halves(int direction) const {
     std::array<BezierPatch, 2> out{*this, *this};
     const int stride = degreeV_ + 1;
     if (direction == 0) {
-        for (int j = 0; j <= degreeV_; ++j)
-            splitInHalves(&out[0].poles_[j], &out[1].poles_[j], degreeU_, stride);
+        // every column at once, a whole row of the net per step (as restricted() cuts along u)
+        splitInHalves(out[0].poles_.data(), out[1].poles_.data(), degreeU_, stride, stride);
     } else {
         for (int i = 0; i <= degreeU_; ++i)
             splitInHalves(&out[0].poles_[i * stride], &out[1].poles_[i * stride], degreeV_, 1);
