@@ -1986,7 +1986,18 @@ TessellationResult tessellateOnce(const Model& model, const TessellationOptions&
     // and two B-rep vertices a sloppy file puts that close (trj7_b1-ec-214.stp: 0.0008 apart,
     // 0.002 T at relative 1e-3) leave a crack where one face ends at each. Moving a point by at
     // most 1e-2 T moves its triangles by no more, within the budget's slack.
-    WeldedPoints welded = weldPoints(mesh.positions, used, 1e-2 * options.tolerance);
+    const double weldDistance = 1e-2 * options.tolerance;
+    WeldedPoints welded = weldPoints(mesh.positions, used, weldDistance);
+    // Not across a plate thinner than that (a 0.01 mm plate at T = 1.03 mm, relative 2e-2 of
+    // the box fused with a cylinder of tests/bench/generated_shapes.py): its two sides' corners
+    // would become one, the sides would lie on each other, and the mesh would open along its
+    // rims (8 open edges and 11 used by three triangles or more, where BRepMesh leaves none).
+    {
+        std::vector<std::int32_t> brepVertex(mesh.positions.size(), -1);
+        for (const auto& [vertexAndFace, id] : vertexOfBrepVertex)
+            if (id < brepVertex.size()) brepVertex[id] = vertexAndFace.first;
+        unweldFolds(mesh.triangles, mesh.positions, brepVertex, weldDistance, welded);
+    }
     const std::vector<std::uint32_t>& remap = welded.remap;
     // whether a triangle keeps three points after the weld
     auto keepsThreePoints = [&](const std::array<std::uint32_t, 3>& c) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -17,5 +19,17 @@ struct WeldedPoints {
 };
 WeldedPoints weldPoints(const std::vector<Point3>& points, const std::vector<char>& used,
                         double quantum);
+
+// Takes back the welds that fold the mesh: between two points where the weld joined two B-rep
+// vertices each (brepVertex: per point, the vertex it stands for or -1), a side used by more
+// triangles after the weld than any side it came from was, or one where the weld joined two
+// triangles lying on each other (two faces of a plate thinner than the weld, on each other or
+// across its rim). The points that the weld moved onto such a side's ends are welded again (at
+// `quantum`) among themselves only, apart from the points they were moved onto. Returns how
+// many points it moved back.
+std::size_t unweldFolds(const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                        const std::vector<Point3>& points,
+                        const std::vector<std::int32_t>& brepVertex, double quantum,
+                        WeldedPoints& welded);
 
 }  // namespace nurbslod
