@@ -310,7 +310,7 @@ public:
     // Appends the triangles; false when the input was not a valid polygon with holes.
     bool triangulate(std::vector<Triangle>& triangles) {
         bool valid = bridgesFound_;
-        if (count_ > kIndexedFrom) buildZOrderIndex();
+        if (count_ > kIndexedFrom) buildCandidateIndex();
         std::uint32_t current = start_;
         while (count_ > 3) {
             const std::optional<std::uint32_t> ear = findEar(current);
@@ -343,14 +343,15 @@ private:
     // exists.
     static constexpr double kGoodEarQuality = 0.5;
     static constexpr std::size_t kEarLookahead = 8;
-    // A ring of more nodes than this is indexed along a Z-order (Morton) curve: the ear test
-    // then visits the nodes whose code lies between its triangle's box corners' codes, instead
-    // of every node of the ring. The ear test is what makes ear clipping O(n^2); the unrolled
-    // cylinders' rings (hundreds of points, triangulated again each round of
-    // chordPointsForUnrolledBound) spent 60% of their triangulation in it on bottle.brep's
-    // thread at relative 1e-4.
+    // A ring of more nodes than this indexes the nodes that can keep a triangle from being an
+    // ear (buildCandidateIndex) in a grid of buckets: the ear test then visits those in the
+    // cells its triangle's box meets, instead of every node of the ring. The ear test is what
+    // makes ear clipping O(n^2). On bottle.brep at relative 1e-4 the unrolled cylinders' rings
+    // (up to 1,080 points, triangulated again each round of chordPointsForUnrolledBound) are
+    // most of the ear clipping: its ear tests took 98 million instructions with every node
+    // indexed along a Z-order curve (the ears of a strip span its height, and their boxes' codes
+    // most of the ring's), 49 million now. An index from 16 nodes did no better.
     static constexpr std::size_t kIndexedFrom = 80;
-    static constexpr std::uint32_t kNoNode = 0xffffffffu;
 
     std::uint32_t addRing(const std::vector<RingVertex>& ring) {
         const auto first = std::uint32_t(nodes_.size());
@@ -376,32 +377,44 @@ private:
         link(previousOf(node), nextOf(node));
         if (start_ == node) start_ = nextOf(node);
         --count_;
-        if (!zCode_.empty()) {
-            if (previousInZ_[node] != kNoNode) nextInZ_[previousInZ_[node]] = nextInZ_[node];
-            if (nextInZ_[node] != kNoNode) previousInZ_[nextInZ_[node]] = previousInZ_[node];
+        if (!candidate_.empty()) {
+            removed_[node] = 1;
+            // its neighbours' angles changed; one that turns right now joins the candidates
+            for (const std::uint32_t neighbour : {previousOf(node), nextOf(node)})
+                if (!candidate_[neighbour] && turnsRight(neighbour)) {
+                    candidate_[neighbour] = 1;
+                    lateCandidates_.push_back(neighbour);
+                }
         }
     }
 
-    // The Morton code of a point: its coordinates mapped onto 16 bits each across the ring's
-    // box and interleaved. The map is non-decreasing in x and in y (double rounding included),
-    // so a point inside a box has a code between those of the box's low and high corners.
-    std::uint32_t zCodeOf(std::int64_t x, std::int64_t y) const {
-        auto cell = [&](std::int64_t value, double low) {
-            const double scaled = (double(value) - low) * zScale_;
-            return std::uint32_t(std::clamp(scaled, 0.0, 65535.0));
-        };
-        auto spread = [](std::uint32_t v) {
-            v = (v | (v << 8)) & 0x00FF00FFu;
-            v = (v | (v << 4)) & 0x0F0F0F0Fu;
-            v = (v | (v << 2)) & 0x33333333u;
-            v = (v | (v << 1)) & 0x55555555u;
-            return v;
-        };
-        return spread(cell(x, zLowX_)) | (spread(cell(y, zLowY_)) << 1);
+    // The grid cell of a coordinate along one axis (0 x, 1 y), clamped to the grid.
+    std::int64_t cellAlong(int axis, std::int64_t value) const {
+        const double cell = (double(value) - gridLow_[axis]) * cellsPerUnit_[axis];
+        return std::int64_t(std::clamp(cell, 0.0, double(cells_[axis] - 1)));
     }
 
-    // The ring's nodes in Z-order, doubly linked (previousInZ_, nextInZ_); remove() unlinks.
-    void buildZOrderIndex() {
+    // whether the node turns right, or back on itself (a spike, a repeated point)
+    bool turnsRight(std::uint32_t node) const {
+        const IntegerPoint2 &a = pointOf(previousOf(node)), &b = pointOf(node),
+                            &c = pointOf(nextOf(node));
+        const int turn = orientation(a, b, c);
+        return turn < 0 || (turn == 0 && !isStraight(a, b, c));
+    }
+
+    // The nodes an ear test must visit besides the two next to its triangle, in a grid of
+    // buckets over the ring's box (about one node a cell; candidates_): those that turn right
+    // (turnsRight), and those whose point occurs more than once (bridge ends, touching rings). A
+    // vertex inside the closed triangle of a strictly convex tip makes one of these, or a neighbour
+    // of the triangle, lie in it too (Eberly, "Triangulation by Ear Clipping", section 2). Of the
+    // vertices in it take those farthest from the side between the tip's neighbours: no edge
+    // crosses the tip's two sides, so their edges run back from the tip or along that side's
+    // direction, while the ring's inside lies towards the tip. One whose two edges run back turns
+    // right; otherwise a straight run of them ends at a vertex whose edge runs back (it turns
+    // right), at a repeated corner point, or, where the run lies on that side, at the triangle's
+    // own neighbour. Straight vertices, most of a strip's (an unrolled cylinder's rims), need no
+    // visit. A node that turns right later, as its neighbour is cut off, joins lateCandidates_.
+    void buildCandidateIndex() {
         std::vector<std::uint32_t> ring;
         ring.reserve(count_);
         std::uint32_t node = start_;
@@ -415,21 +428,37 @@ private:
             lowY = std::min(lowY, y);
             highY = std::max(highY, y);
         }
-        zLowX_ = lowX;
-        zLowY_ = lowY;
-        const double extent = std::max(highX - lowX, highY - lowY);
-        zScale_ = extent > 0 ? 65535.0 / extent : 0.0;
-        zCode_.assign(nodes_.size(), 0);
-        previousInZ_.assign(nodes_.size(), kNoNode);
-        nextInZ_.assign(nodes_.size(), kNoNode);
-        for (const std::uint32_t n : ring) zCode_[n] = zCodeOf(pointOf(n).x, pointOf(n).y);
-        std::sort(ring.begin(), ring.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return std::tie(zCode_[a], a) < std::tie(zCode_[b], b);
+        // as many cells as nodes, as near square as the box allows
+        const double width = std::max(highX - lowX, 1.0), height = std::max(highY - lowY, 1.0);
+        const double side = std::sqrt(width * height / double(ring.size()));
+        gridLow_ = {lowX, lowY};
+        cells_ = {
+            std::clamp<std::int64_t>(std::int64_t(width / side), 1, std::int64_t(ring.size())),
+            std::clamp<std::int64_t>(std::int64_t(height / side), 1, std::int64_t(ring.size()))};
+        cellsPerUnit_ = {double(cells_[0]) / width, double(cells_[1]) / height};
+        candidate_.assign(nodes_.size(), 0);
+        removed_.assign(nodes_.size(), 0);
+        for (const std::uint32_t n : ring) candidate_[n] = turnsRight(n) ? 1 : 0;
+        std::vector<std::uint32_t> byPoint = ring;
+        std::sort(byPoint.begin(), byPoint.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return std::tie(pointOf(a).x, pointOf(a).y) < std::tie(pointOf(b).x, pointOf(b).y);
         });
-        for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
-            nextInZ_[ring[i]] = ring[i + 1];
-            previousInZ_[ring[i + 1]] = ring[i];
-        }
+        for (std::size_t i = 0; i + 1 < byPoint.size(); ++i)
+            if (pointOf(byPoint[i]) == pointOf(byPoint[i + 1]))
+                candidate_[byPoint[i]] = candidate_[byPoint[i + 1]] = 1;
+        // the buckets as one array, cell by cell (bucketStart_: where each cell's begin)
+        auto cellOf = [&](std::uint32_t n) {
+            return std::size_t(cellAlong(1, pointOf(n).y) * cells_[0] + cellAlong(0, pointOf(n).x));
+        };
+        bucketStart_.assign(std::size_t(cells_[0] * cells_[1]) + 1, 0);
+        for (const std::uint32_t n : ring)
+            if (candidate_[n]) ++bucketStart_[cellOf(n) + 1];
+        for (std::size_t c = 1; c < bucketStart_.size(); ++c)
+            bucketStart_[c] += bucketStart_[c - 1];
+        candidates_.resize(bucketStart_.back());
+        std::vector<std::uint32_t> filled(bucketStart_.begin(), bucketStart_.end() - 1);
+        for (const std::uint32_t n : ring)
+            if (candidate_[n]) candidates_[filled[cellOf(n)]++] = n;
     }
 
     std::uint32_t copyOf(std::uint32_t node) {
@@ -651,22 +680,26 @@ private:
             return orientation(a, b, p) >= 0 && orientation(b, c, p) >= 0 &&
                    orientation(c, a, p) >= 0;
         };
-        if (zCode_.empty()) {
+        if (candidate_.empty()) {
             for (std::uint32_t node = nextOf(next); node != previous; node = nextOf(node))
                 if (blocks(node)) return false;
             return true;
         }
-        // the same nodes, those whose codes lie between the box corners' (the tip's among them)
-        const std::uint32_t lowest = zCodeOf(minimumX, minimumY);
-        const std::uint32_t highest = zCodeOf(maximumX, maximumY);
+        // the triangle's two neighbours, and the candidates in the cells its box meets (cut-off
+        // ones skipped)
         const auto other = [&](std::uint32_t node) {
-            return node != previous && node != tip && node != next;
+            return !removed_[node] && node != previous && node != tip && node != next;
         };
-        for (std::uint32_t node = nextInZ_[tip]; node != kNoNode && zCode_[node] <= highest;
-             node = nextInZ_[node])
+        for (const std::uint32_t node : {previousOf(previous), nextOf(next)})
             if (other(node) && blocks(node)) return false;
-        for (std::uint32_t node = previousInZ_[tip]; node != kNoNode && zCode_[node] >= lowest;
-             node = previousInZ_[node])
+        const std::int64_t lowColumn = cellAlong(0, minimumX), highColumn = cellAlong(0, maximumX);
+        for (std::int64_t row = cellAlong(1, minimumY); row <= cellAlong(1, maximumY); ++row) {
+            const std::size_t first = std::size_t(row * cells_[0] + lowColumn);
+            const std::size_t last = std::size_t(row * cells_[0] + highColumn);
+            for (std::uint32_t k = bucketStart_[first]; k < bucketStart_[last + 1]; ++k)
+                if (other(candidates_[k]) && blocks(candidates_[k])) return false;
+        }
+        for (const std::uint32_t node : lateCandidates_)
             if (other(node) && blocks(node)) return false;
         return true;
     }
@@ -741,9 +774,15 @@ private:
     }
 
     std::vector<Node> nodes_;
-    // the Z-order index of a large ring (buildZOrderIndex): empty below kIndexedFrom nodes
-    std::vector<std::uint32_t> zCode_, previousInZ_, nextInZ_;
-    double zLowX_ = 0, zLowY_ = 0, zScale_ = 0;
+    // the ear tests' index of a large ring (buildCandidateIndex), empty below kIndexedFrom
+    // nodes: the grid (its low corner, cells per unit and cells along x and y), the candidates
+    // cell by cell (row by row, x fastest) with where each cell's begin, per node whether it is
+    // a candidate or cut off, and the nodes that became candidates since
+    std::array<double, 2> gridLow_{}, cellsPerUnit_{};
+    std::array<std::int64_t, 2> cells_{};
+    std::vector<std::uint32_t> candidates_, bucketStart_;
+    std::vector<char> candidate_, removed_;
+    std::vector<std::uint32_t> lateCandidates_;
     std::uint32_t start_ = 0;
     std::size_t count_ = 0;
     bool bridgesFound_ = true;

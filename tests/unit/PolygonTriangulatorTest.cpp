@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <clipper.hpp>
 #include <cmath>
@@ -385,6 +386,31 @@ TEST(PolygonTriangulator, TriangleWithHangingPointsOnEverySide) {
     expectValidTriangulation(rings, result);
 }
 
+// Large enough for the ear test's index, which leaves straight nodes out: a triangle with 40
+// hanging points on each side (straight nodes only, besides its corners), where an ear whose
+// new side runs along a side of hanging points must still be refused; and a strip whose lower
+// rim is straight and whose upper rim zigzags by one unit, as an unrolled cylinder's helix
+// rounds to the integer grid.
+TEST(PolygonTriangulator, ManyStraightNodesInTheIndexedEarTest) {
+    Ring triangle;
+    const std::array<IntegerPoint2, 3> corners{{{0, 0}, {8200, 0}, {4100, 8200}}};
+    for (int side = 0; side < 3; ++side) {
+        const IntegerPoint2& from = corners[side];
+        const IntegerPoint2& to = corners[(side + 1) % 3];
+        for (int k = 0; k < 41; ++k)
+            triangle.push_back(
+                {from.x + (to.x - from.x) * k / 41, from.y + (to.y - from.y) * k / 41});
+    }
+    Ring strip;
+    for (int k = 0; k <= 200; ++k) strip.push_back({50 * k, 0});
+    for (int k = 200; k >= 0; --k) strip.push_back({50 * k + 7, 3000 + (k % 2)});
+    for (const Rings& rings : {Rings{triangle}, Rings{strip}}) {
+        const Triangulation result = triangulatePolygon(rings);
+        EXPECT_EQ(result.triangles.size(), rings.front().size() - 2);
+        expectValidTriangulation(rings, result);
+    }
+}
+
 TEST(PolygonTriangulator, ConvexPolygon) {
     const Rings rings{{{0, -10}, {7, -7}, {10, 0}, {7, 7}, {0, 10}, {-7, 7}, {-10, 0}, {-7, -7}}};
     const Triangulation result = triangulatePolygon(rings);
@@ -762,7 +788,8 @@ TEST(PolygonTriangulator, RandomStarShapedPolygonsWithSquareHoles) {
     expectRandomStarShapedPolygonsWithSquareHoles(2004, 400, 4, 40);
 }
 
-// Rings of more than 80 nodes take the Z-order index in the ear test: the same checks.
+// Rings of more than 80 nodes take the ear test's index of the nodes that turn right or repeat
+// a point: the same checks.
 TEST(PolygonTriangulator, RandomStarShapedPolygonsOfManyPointsWithSquareHoles) {
     expectRandomStarShapedPolygonsWithSquareHoles(2026, 100, 81, 600);
 }
