@@ -97,7 +97,8 @@ public:
     // it tells where the need is too even along the span for graded columns to save one (a
     // cylinder whose circles' chords set its columns: bug3883_xr2-ct-214_bolt.stp at relative
     // 1e-4 took 16% more instructions searching them, 2.5% with the estimate first).
-    double gradedCountEstimate(std::int64_t a, std::int64_t b, int k) const;
+    // Infinity, after one test a place, where it cannot reach `enough`.
+    double gradedCountEstimate(std::int64_t a, std::int64_t b, int k, double enough) const;
 
 private:
     struct Verdict;
