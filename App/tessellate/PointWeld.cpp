@@ -56,8 +56,10 @@ private:
 }  // namespace
 
 WeldedPoints weldPoints(const std::vector<Point3>& points, const std::vector<char>& used,
-                        double quantum) {
+                        double quantum,
+                        const std::function<bool(std::uint32_t, std::uint32_t)>& mayJoin) {
     WeldedPoints out;
+    std::vector<std::uint32_t> keptFrom;  // per kept point, the point it was
     out.remap.assign(points.size(), 0);
     std::size_t usedCount = 0;
     for (std::size_t i = 0; i < points.size(); ++i) usedCount += used[i] != 0;
@@ -78,7 +80,9 @@ WeldedPoints weldPoints(const std::vector<Point3>& points, const std::vector<cha
             for (int dy = -1; dy <= 1 && found < 0; ++dy)
                 for (int dz = -1; dz <= 1 && found < 0; ++dz)
                     if (const std::int64_t k = cells.find(cellKey(p, dx, dy, dz));
-                        k >= 0 && (out.kept[static_cast<std::size_t>(k)] - p).norm() <= quantum)
+                        k >= 0 && (out.kept[static_cast<std::size_t>(k)] - p).norm() <= quantum &&
+                        (!mayJoin || mayJoin(static_cast<std::uint32_t>(i),
+                                             keptFrom[static_cast<std::size_t>(k)])))
                         found = k;
         if (found >= 0) {
             out.remap[i] = static_cast<std::uint32_t>(found);
@@ -87,6 +91,7 @@ WeldedPoints weldPoints(const std::vector<Point3>& points, const std::vector<cha
         out.remap[i] = static_cast<std::uint32_t>(out.kept.size());
         cells.insert(cellKey(p, 0, 0, 0), out.remap[i]);
         out.kept.push_back(p);
+        keptFrom.push_back(static_cast<std::uint32_t>(i));
     }
     return out;
 }

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "geometry/Point.hpp"
@@ -17,8 +18,11 @@ struct WeldedPoints {
     std::vector<Point3> kept;
     std::vector<std::uint32_t> remap;  // per input point its kept point (unused: unspecified)
 };
+// mayJoin(point, kept), where given, may refuse to merge a point into the kept point (given as
+// the first point that kept it); the search then goes on to the other kept points near it.
 WeldedPoints weldPoints(const std::vector<Point3>& points, const std::vector<char>& used,
-                        double quantum);
+                        double quantum,
+                        const std::function<bool(std::uint32_t, std::uint32_t)>& mayJoin = {});
 
 // Takes back the welds that fold the mesh: between two points where the weld joined two B-rep
 // vertices each (brepVertex: per point, the vertex it stands for or -1), a side used by more

@@ -127,6 +127,27 @@ TEST(OpenEdges, APlateThinnerThanTheWeldStaysClosed) {
     EXPECT_EQ(brepMeshOpenEdges(shape, result.tolerance), 0u);
 }
 
+// A label 0.002 high on a chip-sized box (as FreeCAD's IDF chips carry their marking) at
+// relative 1e-1: T = 0.25 and the weld reaches 0.0025, past the label's height. The weld joined
+// each of the label's corners to the corner under it, the two ends of one B-rep edge, and the
+// label's side faces, gone with them, left 4 open edges and 4 used by three triangles (the chips
+// at 1e-1 and 5e-2 up to 67; BRepMesh none). The two ends of one edge are no longer welded.
+TEST(OpenEdges, ALabelLowerThanTheWeldStaysClosed) {
+    BRepAlgoAPI_Fuse fuse(BRepPrimAPI_MakeBox(2, 1.25, 0.8).Shape(),
+                          BRepPrimAPI_MakeBox(gp_Pnt(0.7, 0.45, 0.8), 0.5, 0.3, 0.002).Shape());
+    ASSERT_TRUE(fuse.IsDone());
+    const TopoDS_Shape shape = fuse.Shape();
+    const auto result = tessellateGuaranteed(shape, 1e-1);
+    ASSERT_GT(1e-2 * result.tolerance, 0.002);  // the weld reaches past the label's height
+    EXPECT_TRUE(result.failures.empty());
+    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+    EXPECT_EQ(report.nonManifoldEdges, 0u);
+    EXPECT_EQ(report.openEdges, 0u);
+    EXPECT_EQ(brepMeshOpenEdges(shape, result.tolerance), 0u);
+}
+
 // wing.brep has four free edges (edges of one face). Each kd-tree cell side that crossed one
 // left a vertex on the edge's chord, one more open edge each: 339 open edges at relative 1e-3
 // and 2597 at 1e-4, where BRepMesh leaves 50 and 100. The face's own points on free chords are

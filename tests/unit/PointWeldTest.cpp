@@ -173,3 +173,22 @@ TEST(PointWeld, WeldsThatCloseACrackAreKept) {
     EXPECT_EQ(welded.remap[5], welded.remap[1]);
     EXPECT_EQ(sideUses(triangles, welded.remap).at({welded.remap[0], welded.remap[1]}), 2);
 }
+
+// A refused join (mayJoin) keeps the point apart from that kept point, and the search goes on to
+// the others near it.
+TEST(PointWeld, ARefusedJoinSearchesOn) {
+    // the third point is within the quantum of the first (refused) and of the second (allowed)
+    const std::vector<Point3> points{{0, 0, 0}, {0.0012, 0, 0}, {0.0009, 0, 0}};
+    const std::vector<char> used{1, 1, 1};
+    const auto refuseA = [](std::uint32_t point, std::uint32_t kept) {
+        return !(point == 2 && kept == 0);
+    };
+    const auto welded = nurbslod::weldPoints(points, used, 1e-3, refuseA);
+    ASSERT_EQ(welded.kept.size(), 2u);
+    EXPECT_EQ(welded.remap[2], welded.remap[1]);
+    EXPECT_NE(welded.remap[2], welded.remap[0]);
+    // refusing every join keeps every point
+    const auto none = nurbslod::weldPoints(points, used, 1e-3,
+                                           [](std::uint32_t, std::uint32_t) { return false; });
+    EXPECT_EQ(none.kept.size(), 3u);
+}
