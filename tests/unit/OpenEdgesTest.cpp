@@ -105,6 +105,22 @@ std::optional<std::size_t> corpusOpenEdges(const char* name, double relative) {
     return openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance);
 }
 
+// A solid with a feature `thickness` thick, at `relative` where the weld (1e-2 T) reaches
+// across it: its mesh is closed, no side is used by three triangles, verify passes, and BRepMesh
+// leaves no open edge either.
+void expectClosedAcrossAFeatureThinnerThanTheWeld(const TopoDS_Shape& shape, double relative,
+                                                  double thickness) {
+    const auto result = tessellateGuaranteed(shape, relative);
+    ASSERT_GT(1e-2 * result.tolerance, thickness);
+    EXPECT_TRUE(result.failures.empty());
+    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
+    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
+    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
+    EXPECT_EQ(report.nonManifoldEdges, 0u);
+    EXPECT_EQ(report.openEdges, 0u);
+    EXPECT_EQ(brepMeshOpenEdges(shape, result.tolerance), 0u);
+}
+
 // A plate 0.01 thick fused with a cylinder (sliver_and_cylinder of
 // tests/bench/generated_shapes.py) at relative 2e-2: T = 1.03, and the weld of points closer
 // than 1e-2 T joined the plate's two sides. They lay on each other and the mesh opened along the
@@ -115,16 +131,7 @@ TEST(OpenEdges, APlateThinnerThanTheWeldStaysClosed) {
         BRepPrimAPI_MakeBox(50, 0.01, 10).Shape(),
         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(25, 0, 0), gp_Dir(0, 0, 1)), 3, 10).Shape());
     ASSERT_TRUE(fuse.IsDone());
-    const TopoDS_Shape shape = fuse.Shape();
-    const auto result = tessellateGuaranteed(shape, 2e-2);
-    ASSERT_GT(1e-2 * result.tolerance, 0.01);  // the weld reaches across the plate
-    EXPECT_TRUE(result.failures.empty());
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
-    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
-    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.nonManifoldEdges, 0u);
-    EXPECT_EQ(report.openEdges, 0u);
-    EXPECT_EQ(brepMeshOpenEdges(shape, result.tolerance), 0u);
+    expectClosedAcrossAFeatureThinnerThanTheWeld(fuse.Shape(), 2e-2, 0.01);
 }
 
 // A label 0.002 high on a chip-sized box (as FreeCAD's IDF chips carry their marking) at
@@ -136,16 +143,7 @@ TEST(OpenEdges, ALabelLowerThanTheWeldStaysClosed) {
     BRepAlgoAPI_Fuse fuse(BRepPrimAPI_MakeBox(2, 1.25, 0.8).Shape(),
                           BRepPrimAPI_MakeBox(gp_Pnt(0.7, 0.45, 0.8), 0.5, 0.3, 0.002).Shape());
     ASSERT_TRUE(fuse.IsDone());
-    const TopoDS_Shape shape = fuse.Shape();
-    const auto result = tessellateGuaranteed(shape, 1e-1);
-    ASSERT_GT(1e-2 * result.tolerance, 0.002);  // the weld reaches past the label's height
-    EXPECT_TRUE(result.failures.empty());
-    EXPECT_EQ(openEdges(result.mesh.positions, result.mesh.triangles, result.tolerance), 0u);
-    const occ::VerificationReport report = occ::verifyMesh(shape, result.mesh, result.tolerance);
-    EXPECT_TRUE(report.pass) << "dev " << report.maxDev << " cover " << report.maxCover;
-    EXPECT_EQ(report.nonManifoldEdges, 0u);
-    EXPECT_EQ(report.openEdges, 0u);
-    EXPECT_EQ(brepMeshOpenEdges(shape, result.tolerance), 0u);
+    expectClosedAcrossAFeatureThinnerThanTheWeld(fuse.Shape(), 1e-1, 0.002);
 }
 
 // wing.brep has four free edges (edges of one face). Each kd-tree cell side that crossed one
