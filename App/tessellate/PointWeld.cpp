@@ -101,18 +101,17 @@ std::size_t unweldFolds(const std::vector<std::array<std::uint32_t, 3>>& triangl
                         const std::vector<std::int32_t>& brepVertex, double quantum,
                         WeldedPoints& welded) {
     std::vector<std::uint32_t>& remap = welded.remap;
-    // the kept points the weld moved a point onto, and of those the ones where it joined two
-    // B-rep vertices (the first one's number, then -2); only sides at those can change
-    std::vector<char> gathers(welded.kept.size(), 0);
+    // per kept point, the B-rep vertices the weld joined there: none (-1), one (its number) or
+    // several (-2); only sides between two of the last kind are looked at
     std::vector<std::int64_t> joined(welded.kept.size(), -1);
     for (const auto& t : triangles)
         for (const std::uint32_t i : t) {
-            if (points[i] != welded.kept[remap[i]]) gathers[remap[i]] = 1;
             const std::int64_t vertex = i < brepVertex.size() ? brepVertex[i] : -1;
             std::int64_t& at = joined[remap[i]];
             if (vertex >= 0 && at != vertex) at = at == -1 ? vertex : -2;
         }
-    // each side at such a point, welded, with the side it came from and its triangle
+    auto joinsVertices = [&](std::uint32_t kept) { return joined[kept] == -2; };
+    // each such side, welded, with the side it came from and its triangle
     struct Side {
         std::uint32_t low, high;          // welded
         std::uint32_t fromLow, fromHigh;  // before the weld
@@ -123,11 +122,10 @@ std::size_t unweldFolds(const std::vector<std::array<std::uint32_t, 3>>& triangl
         const auto& t = triangles[n];
         const std::uint32_t a = remap[t[0]], b = remap[t[1]], c = remap[t[2]];
         if (a == b || b == c || a == c) continue;  // the weld drops it
-        if (!gathers[a] && !gathers[b] && !gathers[c]) continue;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t p = t[k], q = t[(k + 1) % 3];
             const std::uint32_t wp = remap[p], wq = remap[q];
-            if (!gathers[wp] && !gathers[wq]) continue;
+            if (!joinsVertices(wp) || !joinsVertices(wq)) continue;
             sides.push_back(
                 {std::min(wp, wq), std::max(wp, wq), std::min(p, q), std::max(p, q), n});
         }
@@ -168,10 +166,7 @@ std::size_t unweldFolds(const std::vector<std::array<std::uint32_t, 3>>& triangl
         const bool joinedOnEachOther =
             j - i == 2 && mostFromOne == 1 &&
             weldedNormal(sides[i].triangle).dot(weldedNormal(sides[i + 1].triangle)) < kOnEachOther;
-        const bool betweenJoinedVertices =
-            joined[sides[i].low] == -2 && joined[sides[i].high] == -2;
-        if (betweenJoinedVertices && (moreThanBefore || joinedOnEachOther))
-            folded[sides[i].low] = folded[sides[i].high] = 1;
+        if (moreThanBefore || joinedOnEachOther) folded[sides[i].low] = folded[sides[i].high] = 1;
         i = j;
     }
     // the moved points of those welded points, welded again among themselves only: a side's
